@@ -1,0 +1,177 @@
+"""The ``juncture`` command: thin wrappers that parse, call the public API and print.
+
+A :class:`~juncture.errors.JunctureError` (bad input) becomes one line on stderr and exit
+status 2, as argparse gives for a usage error; ``--debug`` shows the traceback instead.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import warnings
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from . import __version__
+from .errors import JunctureError
+
+__all__ = ["main", "bundled_example"]
+
+
+def bundled_example(name="supersonic_transport.inp"):
+    """Path of a bundled example file (package data)."""
+    return Path(str(resources.files("juncture") / "data" / name))
+
+
+def _fmt_extent(lo, hi):
+    return f"[{lo:10.4g}, {hi:10.4g}]"
+
+
+def _describe(obj):
+    from .geometry import Geometry
+
+    lines = []
+    if isinstance(obj, Geometry):
+        lines.append(f"title: {obj.title}")
+        lines.append(f"{len(obj.networks)} networks:")
+        for name, net in obj.networks.items():
+            sym = obj.symmetry.get(name)
+            lines.append(f"  {name:<32} {net.shape[0]:4d} n-lines x {net.shape[1]:4d} points"
+                         + (f"  image in {sym} plane" if sym else ""))
+        ext = obj.extents()
+    else:
+        cfg = obj
+        lines.append(f"title: {cfg.title}")
+        if cfg.reference_area is not None:
+            lines.append(f"reference area: {cfg.reference_area:g}"
+                         + (f", chord {cfg.reference_chord:g}" if cfg.reference_chord else "")
+                         + (f", moment centre x {cfg.moment_x:g}" if cfg.moment_x else ""))
+        lines.append(f"{len(cfg)} components:")
+        for comp in cfg:
+            kind = getattr(comp, "kind", None) or type(comp).__name__
+            if hasattr(comp, "n_sections"):
+                counts = f"{comp.n_sections} sections x {comp.n_stations} stations"
+            else:
+                counts = f"{comp.x.size} stations in {len(comp.segments)} segment(s)"
+            nets = comp.networks()
+            pts = np.concatenate([n.reshape(-1, 3) for n in nets.values()])
+            lo, hi = pts.min(0), pts.max(0)
+            lines.append(f"  {comp.name:<12} {kind:<14} {counts:<32}"
+                         f"{'mirrored' if comp.mirrored else '':<9}")
+            lines.append("      x " + _fmt_extent(lo[0], hi[0]) + "  y " + _fmt_extent(lo[1], hi[1])
+                         + "  z " + _fmt_extent(lo[2], hi[2]))
+        ext = cfg.extents()
+    lines.append("extents: x " + _fmt_extent(ext[0, 0], ext[1, 0]) + "  y "
+                 + _fmt_extent(ext[0, 1], ext[1, 1]) + "  z " + _fmt_extent(ext[0, 2], ext[1, 2]))
+    return lines
+
+
+def _read_with_warnings(path, fmt=None):
+    from .io import read
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        obj = read(path, format=fmt)
+    return obj, [str(w.message) for w in caught]
+
+
+def _cmd_info(args):
+    obj, warns = _read_with_warnings(args.file, args.format)
+    print("\n".join(_describe(obj)))
+    if warns:
+        print(f"{len(warns)} warning(s):")
+        for w in warns:
+            print(f"  {w}")
+    return 0
+
+
+def _cmd_convert(args):
+    from .io import write
+
+    obj, warns = _read_with_warnings(args.input, args.input_format)
+    for w in warns:
+        print(f"warning: {w}", file=sys.stderr)
+    write(obj, args.output, format=args.output_format)
+    print(f"wrote {args.output}")
+    return 0
+
+
+def _cmd_demo(args):
+    from . import plots
+    from .io import write
+
+    out = Path(args.output)
+    out.mkdir(parents=True, exist_ok=True)
+    deck = bundled_example()
+    cfg, warns = _read_with_warnings(deck)
+    for w in warns:
+        print(f"warning: {w}", file=sys.stderr)
+    print(f"read {deck.name}: {cfg.title}")
+    print("\n".join("  " + s for s in _describe(cfg)[1:]))
+    written = []
+    for name in ("components.wgs", "components.p3d", "components.stl", "components.hess"):
+        try:
+            write(cfg, out / name)
+        except JunctureError as exc:  # a format whose writer is not available
+            print(f"skipped {name}: {exc}", file=sys.stderr)
+            continue
+        written.append(name)
+    for name, fig in (("planform.png", plots.plot_planform(cfg)),
+                      ("side.png", plots.plot_side(cfg)),
+                      ("views.png", plots.plot_views(cfg))):
+        plots.save(fig, out / name)
+        written.append(name)
+    print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
+    return 0
+
+
+def _build_parser():
+    from .io import reader_formats, writer_formats
+
+    p = argparse.ArgumentParser(prog="juncture", description=(
+        "Complete an airplane described as separate components into one surface."))
+    p.add_argument("--version", action="version", version=f"juncture {__version__}")
+    p.add_argument("--debug", action="store_true", help="show tracebacks of errors")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    s = sub.add_parser("info", help="what is in a geometry file, checked")
+    s.add_argument("file")
+    s.add_argument("--format", choices=reader_formats(), help="input format (default: sniff)")
+    s.set_defaults(func=_cmd_info)
+
+    s = sub.add_parser("convert", help="read any supported file, write any supported format")
+    s.add_argument("input")
+    s.add_argument("output")
+    s.add_argument("--from", dest="input_format", choices=reader_formats())
+    s.add_argument("--to", dest="output_format", choices=writer_formats(),
+                   help="output format (default: by extension)")
+    s.set_defaults(func=_cmd_convert)
+
+    s = sub.add_parser("demo", help="run the main job on the bundled supersonic transport")
+    s.add_argument("-o", "--output", default="demo-output", help="output directory")
+    s.set_defaults(func=_cmd_demo)
+    return p
+
+
+def main(argv=None) -> int:
+    """Run the command line; returns the exit status (0 ok, 2 bad input)."""
+    parser = _build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except JunctureError as exc:
+        if args.debug:
+            raise
+        print(f"juncture: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:
+        if args.debug:
+            raise
+        print(f"juncture: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
