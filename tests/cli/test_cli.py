@@ -1,0 +1,95 @@
+"""End-to-end CLI: info, convert, demo, and one clear line (exit 2) for every bad deck."""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import juncture as jc
+from juncture.cli import main
+from tests.support import EXAMPLE_DECK, PDAS_DECK
+
+
+def deck_lines():
+    return PDAS_DECK.read_text().splitlines()
+
+
+def test_info_lists_components_extents_and_warnings(capsys):
+    assert main(["info", str(PDAS_DECK)]) == 0
+    out = capsys.readouterr().out
+    assert "SIMPLE TEST CASE TO ILLUSTRATE BODY RE-SHAPING" in out
+    assert "wing" in out and "body" in out and "3 segment(s)" in out
+    assert "NFORX(2) = 2 is outside the documented range" in out
+    assert "reference area: 16" in out
+
+
+def test_convert_deck_to_lawgs_and_back(tmp_path, capsys):
+    out = tmp_path / "sst.wgs"
+    assert main(["convert", str(EXAMPLE_DECK), str(out)]) == 0
+    geo = jc.read(out)
+    assert {"wing upper", "wing lower", "tail 1 upper", "fin 3 outboard", "pod 1"} <= set(
+        geo.networks)
+    assert geo.symmetry["wing upper"] == "xz" and "fin 3 outboard" not in geo.symmetry
+
+
+def test_demo_writes_every_output(tmp_path, capsys):
+    assert main(["demo", "-o", str(tmp_path)]) == 0
+    for name in ("components.wgs", "components.p3d", "components.stl", "planform.png",
+                 "side.png", "views.png"):
+        assert (tmp_path / name).stat().st_size > 0, name
+    assert (tmp_path / "planform.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def _bad(tmp_path, lines):
+    p = tmp_path / "bad.inp"
+    p.write_text("\r\n".join(lines) + "\r\n")
+    return p
+
+
+MALFORMED = {
+    "truncated": (lambda L: L[:8], r"file ended after line 8 while reading"),
+    "letter in number": (lambda L: L[:4] + ["  100.0   1O.0  0.000  140.0"] + L[5:],
+                         r"line 5, columns 8-14: expected a number"),
+    "count mismatch": (lambda L: L[:3] + ["   0.00  50.00 100.00  120.0"] + L[4:],
+                       r"line 4, columns 22-28: expected 3 values"),
+    "negative area": (lambda L: L[:9] + ["   0.00   40.7 -128.7  221.7  289.5 314.16"] + L[10:],
+                      r"line 10, columns 15-21: .*negative"),
+    "non-monotone": (lambda L: L[:8] + ["  0.000   10.0   30.0   20.0   40.0   50.0"] + L[9:],
+                     r"line 9, columns 22-28: XFUS .*(decrease|increase)"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(MALFORMED))
+def test_malformed_decks_give_exit_2_and_one_line(tmp_path, capsys, case):
+    mutate, match = MALFORMED[case]
+    path = _bad(tmp_path, mutate(deck_lines()))
+    assert main(["info", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("juncture: error: ")
+    assert "Traceback" not in err
+    import re
+
+    assert re.search(match, err), err
+
+
+def test_missing_file_is_exit_2(tmp_path, capsys):
+    assert main(["info", str(tmp_path / "nope.inp")]) == 2
+    assert "cannot open file" in capsys.readouterr().err
+
+
+def test_entry_point_runs_as_a_program(tmp_path):
+    bad = _bad(tmp_path, deck_lines()[:8])
+    run = subprocess.run([sys.executable, "-m", "juncture.cli", "info", str(bad)],
+                         capture_output=True, text=True)
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    ok = subprocess.run([sys.executable, "-m", "juncture.cli", "info", str(PDAS_DECK)],
+                        capture_output=True, text=True)
+    assert ok.returncode == 0 and "body" in ok.stdout
+
+
+def test_extents_printed_match_the_model(capsys):
+    main(["info", str(PDAS_DECK)])
+    out = capsys.readouterr().out
+    ext = jc.read(PDAS_DECK).extents()
+    assert f"{ext[1, 0]:10.4g}" in out and np.isclose(ext[1, 0], 300.0)

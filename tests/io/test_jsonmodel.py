@@ -1,0 +1,62 @@
+"""juncture's JSON/TOML model: exact round trip and clear errors."""
+
+import json
+import warnings
+
+import numpy as np
+import pytest
+
+import juncture as jc
+from tests.support import EXAMPLE_DECK
+
+
+def example():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.read(EXAMPLE_DECK)
+
+
+def test_json_round_trip_is_exact(tmp_path):
+    cfg = example()
+    jc.write(cfg, tmp_path / "sst.json")
+    back = jc.read(tmp_path / "sst.json")
+    assert list(back.components) == list(cfg.components)
+    assert back.reference_area == cfg.reference_area
+    for name in cfg.components:
+        for a, b in zip(cfg[name].networks().values(), back[name].networks().values()):
+            np.testing.assert_array_equal(a, b)
+
+
+def test_toml_reads_the_same_model(tmp_path):
+    toml = tmp_path / "w.toml"
+    toml.write_text('juncture = 1\ntitle = "plate"\n[[components]]\nname = "wing"\n'
+                    'type = "wing"\nle = [[0.0, 0.0, 0.0], [1.0, 5.0, 0.0]]\nchord = [4.0, 2.0]\n'
+                    'x_over_c = [0.0, 50.0, 100.0]\nupper = [[0.0, 3.0, 0.0], [0.0, 3.0, 0.0]]\n')
+    cfg = jc.read(toml)
+    np.testing.assert_allclose(cfg["wing"].point(5.0, 0.5), [2.0, 5.0, 0.06])
+
+
+@pytest.mark.parametrize("mutate, match", [
+    (lambda d: d["components"][0].pop("chord"), r"components\[0\] \('wing'\): missing field"),
+    (lambda d: d["components"][0].update(span=3), r"unknown field\(s\) 'span'"),
+    (lambda d: d["components"][0].update(type="rudder"), r"type must be one of"),
+    (lambda d: d["components"][1]["radius"].__setitem__(0, -1.0),
+     r"components\[1\] \('body'\): radius is negative \(-1\) \(station 1\)"),
+    (lambda d: d.update(juncture=9), r"format version 9 is not supported"),
+])
+def test_bad_models_name_the_field(tmp_path, mutate, match):
+    from juncture.io.jsonmodel import configuration_to_dict
+
+    d = configuration_to_dict(example())
+    mutate(d)
+    p = tmp_path / "bad.json"
+    p.write_text(json.dumps(d))
+    with pytest.raises(jc.DeckError, match=match):
+        jc.read(p)
+
+
+def test_json_syntax_error_names_line_and_column(tmp_path):
+    p = tmp_path / "bad.json"
+    p.write_text('{"juncture": 1,\n "components": [,]}\n')
+    with pytest.raises(jc.DeckError, match=r"bad.json, line 2, column 17: invalid JSON"):
+        jc.read(p)
