@@ -1,0 +1,28 @@
+"""Analysis of complete geometry: plane cuts (area distributions) and supersonic wave drag."""
+
+from .cuts import mach_plane_areas, mach_plane_extents, normal_areas, plane_cut_areas
+from .wavedrag import (
+    FarFieldResult,
+    WaveDragResult,
+    eminton_lord,
+    eminton_lord_convergence,
+    far_field_drag,
+    sears_haack_area,
+    sears_haack_drag,
+    von_karman,
+)
+
+__all__ = [
+    "plane_cut_areas",
+    "normal_areas",
+    "mach_plane_areas",
+    "mach_plane_extents",
+    "WaveDragResult",
+    "FarFieldResult",
+    "eminton_lord",
+    "eminton_lord_convergence",
+    "von_karman",
+    "far_field_drag",
+    "sears_haack_drag",
+    "sears_haack_area",
+]
