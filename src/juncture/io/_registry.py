@@ -10,13 +10,14 @@ from __future__ import annotations
 import contextlib
 import os
 import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 from ..errors import DeckError, JunctureError
 
-__all__ = ["register_format", "read", "write", "formats", "atomic_output", "to_geometry",
+__all__ = ["register_format", "read", "write", "formats", "atomic_output", "atomic_path",
+           "to_geometry",
            "reader_formats", "writer_formats"]
 
 
@@ -134,23 +135,38 @@ def write(obj, path, format=None, **kwargs):
 
 
 @contextlib.contextmanager
+def atomic_path(path, suffix=".tmp"):
+    """Yield a temporary path beside ``path``; rename it onto ``path`` only on success.
+
+    For writers that need a file name (meshio, OCP) rather than an open file. On any exception
+    the temporary file is removed and ``path`` is left as it was.
+    """
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix, dir=directory)
+    os.close(fd)
+    try:
+        yield tmp
+        # mkstemp creates the file 0600; give it the permissions a plain open() would.
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
+@contextlib.contextmanager
 def atomic_output(path, mode="w", **open_kwargs):
     """Open a temporary file beside ``path``; rename it onto ``path`` only if the block succeeds.
 
     Yields the open file object. On any exception the temporary file is removed and ``path``
     is left as it was: never a half-written output file.
     """
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, mode, **open_kwargs) as fh:
-            yield fh
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        raise
+    with atomic_path(path) as tmp, open(tmp, mode, **open_kwargs) as fh:
+        yield fh
 
 
 def to_geometry(obj):
