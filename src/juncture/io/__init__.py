@@ -4,8 +4,15 @@ See ``../shared/reference/formats.md`` for the formats. Importing this package r
 every format module.
 """
 
-from ._registry import atomic_output, formats, read, reader_formats, to_geometry, write, \
-    writer_formats
+from ._registry import (
+    atomic_output,
+    formats,
+    read,
+    reader_formats,
+    to_geometry,
+    write,
+    writer_formats,
+)
 
 __all__ = ["read", "write", "formats", "reader_formats", "writer_formats", "atomic_output",
            "to_geometry"]

@@ -16,8 +16,16 @@ import numpy as np
 
 from ..errors import DeckError, GeometryError
 from ..model import ArbitraryBody, CircularBody, Configuration, WingLike
-from ._deck import (ControlCard, DeckCanard, DeckConfiguration, DeckFin, DeckFuselage,
-                    DeckFuselageSegment, DeckPod, DeckWing)
+from ._deck import (
+    ControlCard,
+    DeckCanard,
+    DeckConfiguration,
+    DeckFin,
+    DeckFuselage,
+    DeckFuselageSegment,
+    DeckPod,
+    DeckWing,
+)
 
 __all__ = ["deck_to_configuration", "configuration_to_deck"]
 
