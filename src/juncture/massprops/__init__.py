@@ -1,0 +1,35 @@
+"""Mass properties: wing segments and rotors (Moulton & Hunsaker 2024), analytic solids.
+
+Every producer returns a :class:`MassProperties` in project axes (x aft, y right, z up);
+bodies add by the parallel-axis theorem, and negative densities subtract material.
+"""
+
+from .properties import MassProperties
+from .rotor import Rotor, rotor_disk_integrals
+from .solids import Cuboid, Cylinder, PointMass, Sphere
+from .spec import evaluate_spec, format_table, load_spec, spec_report_json, validate_spec
+from .thickness import NACA4_PRESETS, CustomThickness, Diamond, Naca4, ThicknessDistribution
+from .wing import WingSegment, WingSegmentsResult, wing_segments_mass_properties
+
+__all__ = [
+    "MassProperties",
+    "ThicknessDistribution",
+    "Naca4",
+    "Diamond",
+    "CustomThickness",
+    "NACA4_PRESETS",
+    "WingSegment",
+    "WingSegmentsResult",
+    "wing_segments_mass_properties",
+    "Rotor",
+    "rotor_disk_integrals",
+    "Cuboid",
+    "Cylinder",
+    "Sphere",
+    "PointMass",
+    "load_spec",
+    "validate_spec",
+    "evaluate_spec",
+    "spec_report_json",
+    "format_table",
+]
