@@ -9,8 +9,15 @@ Public API::
 Axes as in the wave-drag deck: x aft, y to starboard, z up; only the y >= 0 half is described.
 """
 
-from .errors import (ConvergenceError, DeckError, GeometryError, JunctureError,
-                     JunctureWarning, MissingDependencyError, SpecError)
+from .errors import (
+                     ConvergenceError,
+                     DeckError,
+                     GeometryError,
+                     JunctureError,
+                     JunctureWarning,
+                     MissingDependencyError,
+                     SpecError,
+)
 from .geometry import Geometry
 from .io import read, write
 

@@ -1,4 +1,4 @@
-"""WingLike: section points (deck formula), linear lofting, interpolation, validation, orientation."""
+"""WingLike: section points (deck formula), linear lofting, interpolation, orientation."""
 
 import numpy as np
 import pytest
