@@ -51,40 +51,43 @@ def _segment_layout(x, segments, name):
 
 
 class _Piecewise:
-    """Segment-wise interpolant of several columns of data along x."""
+    """Segment-wise interpolant of several columns of data along x, as one piecewise cubic.
+
+    Each segment gets its own PCHIP (or linear) interpolant; their polynomial pieces are
+    merged into a single table of breakpoints and cubic coefficients so that evaluation is one
+    binary search and one Horner pass for all columns at once (the root finders call this in
+    their inner loop). Zero-length intervals at repeated joint stations are dropped; beyond
+    the ends the first / last cubic extrapolates.
+    """
 
     def __init__(self, x, columns, bounds, method):
-        self.x, self.bounds, self.method = x, bounds, method
-        self.parts = []
+        breaks, coefs = [], []
         for a, b in bounds:
             xs, ys = x[a:b], columns[a:b]
             if method == "pchip":
-                self.parts.append(PchipInterpolator(xs, ys, axis=0, extrapolate=True))
+                pp = PchipInterpolator(xs, ys, axis=0)
+                c = pp.c  # (4, n-1, cols), local coordinate x - x_k
             else:
-                self.parts.append(None)
-        self.columns = columns
-        self.starts = np.array([x[a] for a, _ in bounds])
+                slope = np.diff(ys, axis=0) / np.diff(xs)[:, None]
+                c = np.stack([np.zeros_like(slope), np.zeros_like(slope), slope, ys[:-1]])
+            breaks.append(xs[:-1])
+            coefs.append(c)
+        self.breaks = np.concatenate(breaks)
+        self.coefs = np.concatenate(coefs, axis=1)  # (4, n_pieces, cols)
+        self.ncols = columns.shape[1]
 
     def __call__(self, xq, nu=0):
         xq = np.asarray(xq, dtype=float)
-        seg = np.clip(np.searchsorted(self.starts, xq, side="right") - 1, 0, len(self.bounds) - 1)
-        out = np.empty(xq.shape + self.columns.shape[1:])
-        for i, (a, b) in enumerate(self.bounds):
-            m = seg == i
-            if not m.any():
-                continue
-            if self.parts[i] is not None:
-                out[m] = self.parts[i](xq[m], nu)
-            else:
-                xs, ys = self.x[a:b], self.columns[a:b]
-                k = np.clip(np.searchsorted(xs, xq[m], side="right") - 1, 0, b - a - 2)
-                h = xs[k + 1] - xs[k]
-                if nu == 0:
-                    w = ((xq[m] - xs[k]) / h).reshape((-1,) + (1,) * (ys.ndim - 1))
-                    out[m] = ys[k] * (1 - w) + ys[k + 1] * w
-                else:
-                    out[m] = (ys[k + 1] - ys[k]) / h.reshape((-1,) + (1,) * (ys.ndim - 1))
-        return out
+        k = np.clip(np.searchsorted(self.breaks, xq, side="right") - 1, 0, self.breaks.size - 1)
+        t = (xq - self.breaks[k])[..., None]
+        c3, c2, c1, c0 = self.coefs[:, k]
+        if nu == 0:
+            return ((c3 * t + c2) * t + c1) * t + c0
+        if nu == 1:
+            return (3 * c3 * t + 2 * c2) * t + c1
+        if nu == 2:
+            return 6 * c3 * t + 2 * c2
+        raise ValueError(f"derivative order {nu} not supported")
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -198,11 +201,15 @@ class CircularBody:
         """TM-4406 eq 6: distance from the local section centre minus r(x), vectorised.
 
         points (..., 3) -> (...): negative inside, positive outside, zero on the surface.
+        Outside the body's x range the radius is 0, so the error is the distance to the axis.
         """
         p = np.asarray(points, float)
-        c = self.center_at(p[..., 0])
-        d = np.hypot(p[..., 1] - c[..., 0], p[..., 2] - c[..., 1])
-        return d - self.radius_at(p[..., 0])
+        xq = p[..., 0] - self.origin[0]
+        rc = self._interp(xq)
+        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
+        d = np.hypot(p[..., 1] - self.origin[1], p[..., 2] - (rc[..., 1] + self.origin[2]))
+        return d - r
 
     def signed_distance(self, points, samples=2001):
         """Signed distance from points (..., 3) to the surface, negative inside [deck length].

@@ -1,0 +1,286 @@
+"""complete(): the wing-body juncture of a configuration as one set of output networks.
+
+Steps (TM-4406): intersect the wing's upper and lower lofting lines with the fuselage
+(eqs 1-6), optionally fillet the juncture (cubic arcs, eq 7, or circular arcs) with leading /
+trailing-edge blending (eqs 8-10), optionally shrink the fuselage so that body + fillet area
+equals the original area at every fillet station (eqs 11-14), and lay out the output blocks
+(4 or 6 blocks, or a single fuselage network). Components other than the wing and the fuselage
+are passed through as their own networks.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from .errors import GeometryError
+from .fillet.area import fillet_added_area
+from .fillet.area import keep_area as _keep_area
+from .fillet.circular import circular_fillet
+from .fillet.cubic import FilletLines, cubic_fillet
+from .geometry import Geometry
+from .intersect import intersect_body
+from .model import CircularBody, Configuration
+from .networks import arc_points, juncture_networks, orient, split_counts
+
+__all__ = ["complete", "CompleteOptions", "sharp_fillet"]
+
+FilletKind = Literal["cubic", "circular"]
+
+
+@dataclass(frozen=True, slots=True)
+class CompleteOptions:
+    """Options of :func:`complete` (all have paper-like defaults).
+
+    Attributes
+    ----------
+    theta_u_deg : float
+        Cubic fillet: angular distance of the start point above/below the intersection [deg].
+    end : {"intersection", "section", "dy"}
+        Cubic fillet end-point option (TM-4406): fraction of the intersection -> section 2
+        distance, fraction of the section 1 -> 2 distance, or a span increment.
+    end_value : float
+        Its value (a fraction, or a length for "dy").
+    blend_length : float or None
+        LE/TE blending length l_b [deck length]; None: a tenth of the wing root's x extent.
+    blending : {"scale", "points"}
+        How the fillet blends out towards the edges (see juncture.fillet.cubic).
+    remedy : {None, "z-constraint", "parabolas"}
+        Low-wing dip remedy for the cubic fillet.
+    fillet_radius : float or None
+        Circular fillet radius rho [deck length]; None: 10 % of the largest body radius.
+    n_fillet_points : int
+        Points per fillet line.
+    blocks : {4, 6}
+        Output layout.
+    single_network : bool
+        Fuselage as one network with the lower intersection re-interpolated at the upper
+        points' x (TM-4406 fig 4) and points redistributed around the wing (fig 5).
+    tolerance : float
+        Relative area tolerance of the keep-area iteration.
+    wing, body : str
+        Names of the wing and fuselage components.
+    """
+
+    theta_u_deg: float = 20.0
+    end: str = "intersection"
+    end_value: float = 0.5
+    blend_length: float | None = None
+    blending: str = "scale"
+    remedy: str | None = None
+    fillet_radius: float | None = None
+    n_fillet_points: int = 9
+    blocks: int = 4
+    single_network: bool = False
+    tolerance: float = 1e-9
+    wing: str = "wing"
+    body: str = "body"
+    extra: dict = field(default_factory=dict)
+
+
+def sharp_fillet(inter):
+    """Degenerate one-point "fillet" lines at the intersection (no fillet)."""
+    pts = inter.points.copy()
+    theta = inter.theta.copy()
+    m = len(pts)
+    return FilletLines(inter.side, pts[:, None, :], pts, pts, theta, inter.u.copy(),
+                       np.zeros(m), np.zeros(m, bool), "none", ())
+
+
+def _sharp_with_misses(body, inter, upper_inter):
+    """No fillet; a lower line that misses the body ends at the body's bottom (TM-4406)."""
+    if inter.found.all():
+        return sharp_fillet(inter)
+    x = np.where(inter.found, inter.points[:, 0], upper_inter.points[:, 0])
+    theta = np.where(inter.found, inter.theta, -0.5 * np.pi)
+    pts = np.where(inter.found[:, None], inter.points, body.point(x, theta))
+    u = np.where(inter.found, inter.u, 0.0)
+    m = len(pts)
+    log = tuple(f"{inter.name}: lofting line {j + 1} misses the body; joined at its bottom"
+                for j in np.flatnonzero(~inter.found))
+    return FilletLines(inter.side, pts[:, None, :], pts, pts, theta, u, np.zeros(m),
+                       np.zeros(m, bool), "none", log)
+
+
+def _pick(cfg, name, kind):
+    try:
+        comp = cfg[name]
+    except GeometryError:
+        raise GeometryError(f"complete() needs a {kind} named {name!r}; the configuration has "
+                            f"{', '.join(cfg.components) or 'no components'}") from None
+    return comp
+
+
+def _fillet_maker(wing, fillet, opts, body0):
+    theta_u = np.radians(opts.theta_u_deg)
+    rho = opts.fillet_radius
+    if fillet == "circular" and rho is None:
+        rho = 0.1 * float(body0.radius.max())
+
+    def make(body):
+        iu = intersect_body(wing, body, "upper")
+        il = intersect_body(wing, body, "lower")
+        if fillet is None:
+            return iu, il, sharp_fillet(iu), _sharp_with_misses(body, il, iu)
+        if fillet == "cubic":
+            kw = dict(theta_u=theta_u, end=opts.end, end_value=opts.end_value,
+                      blend_length=opts.blend_length, n_points=opts.n_fillet_points,
+                      remedy=opts.remedy, blending=opts.blending)
+            return (iu, il, cubic_fillet(wing, body, iu, **kw),
+                    cubic_fillet(wing, body, il, upper_reference=iu, **kw))
+        if fillet == "circular":
+            kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points)
+            return (iu, il, circular_fillet(wing, body, iu, rho, **kw),
+                    circular_fillet(wing, body, il, rho, **kw))
+        raise GeometryError(f"fillet must be None, 'cubic' or 'circular', found {fillet!r}")
+    return make
+
+
+def _reinterpolated_lower(body, upper, lower):
+    """Lower fillet start line re-interpolated at the upper starts' x (TM-4406 fig 4)."""
+    xu = upper.start[:, 0]
+    order = np.argsort(lower.start[:, 0])
+    theta = np.interp(xu, lower.start[order, 0], lower.theta_start[order])
+    start = body.point(xu, theta)
+    pts = lower.points.copy()
+    pts[:, 0] = start
+    return FilletLines(lower.side, pts, start, lower.end, theta, lower.u_end, lower.blend,
+                       lower.dips, lower.kind, lower.log)
+
+
+def _single_network(wing, body, upper, lower, n_half):
+    """Fuselage as one network (fig 5) plus the two wing networks (6-block style)."""
+    nets, seams = juncture_networks(wing, body, upper, lower, 6, n_half)
+    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half)
+    xu = upper.start[:, 0]
+    bottom, top = np.full(xu.size, -0.5 * np.pi), np.full(xu.size, 0.5 * np.pi)
+    region = np.concatenate([arc_points(body, xu, bottom, lower.theta_start, n_below),
+                             arc_points(body, xu, upper.theta_start, top, n_above)], axis=1)
+    xg = body.x_global
+
+    def ring(xs, lo, hi):
+        xs = np.asarray(xs, float)
+        return np.concatenate([arc_points(body, xs, np.full(xs.size, -0.5 * np.pi),
+                                          np.full(xs.size, lo), n_below),
+                               arc_points(body, xs, np.full(xs.size, hi),
+                                          np.full(xs.size, 0.5 * np.pi), n_above)], axis=1)
+
+    ahead = ring(xg[xg < xu[0]], lower.theta_start[0], upper.theta_start[0])
+    behind = ring(xg[xg > xu[-1]], lower.theta_start[-1], upper.theta_start[-1])
+
+    def radial(p):
+        c = body.center_at(p[..., 0])
+        r = np.zeros_like(p)
+        r[..., 1], r[..., 2] = p[..., 1] - c[..., 0], p[..., 2] - c[..., 1]
+        return r
+
+    single = orient(np.concatenate([ahead, region, behind]), radial)
+    out = {"body": single, "wing upper": nets["wing upper"], "wing lower": nets["wing lower"]}
+    return out, [s for s in seams if s["a"].startswith("wing")]
+
+
+def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=False,
+             options: CompleteOptions | None = None, **kwargs):
+    """Complete the wing-body juncture of ``cfg`` into one set of networks (TM-4406).
+
+    Parameters
+    ----------
+    cfg : Configuration
+        Must hold a wing-type component (``options.wing``, default ``"wing"``) and a circular
+        fuselage (``options.body``, default ``"body"``).
+    fillet : {None, "cubic", "circular"}
+        No fillet (sharp intersection), cubic-arc fillet (eq 7) or circular-arc fillet.
+    keep_area : bool
+        Re-design the fuselage radius so body + fillet area equals the original area at every
+        fillet station (TM-4406, "Redesign To Compensate for Added Volume").
+    options : CompleteOptions, optional
+        Every other choice; keyword arguments override its fields, e.g.
+        ``complete(cfg, "cubic", theta_u_deg=30, blocks=6)``.
+
+    Returns
+    -------
+    Geometry
+        ``networks`` (4 or 6 juncture blocks, or a single fuselage network, plus the other
+        components' own networks), ``intersections`` (``"wing/body upper"``,
+        ``"wing/body lower"``), ``fillets`` (``"fillet upper"``, ``"fillet lower"``, each
+        (n_stations, n_points, 3) from the body to the wing), ``stations`` (``x``,
+        ``area_original``, ``area_fillet``, ``radius_original``, ``radius_new``, ``residual``,
+        ``iterations``) and a ``log``.
+
+    Examples
+    --------
+    >>> import juncture as jc
+    >>> from juncture.cli import bundled_example
+    >>> import warnings; warnings.simplefilter("ignore")
+    >>> geo = jc.complete(jc.read(bundled_example()), fillet="cubic", keep_area=True)
+    >>> bool(abs(geo.stations["residual"]).max() < 1e-9)
+    True
+    """
+    opts = options or CompleteOptions()
+    if kwargs:
+        unknown = sorted(set(kwargs) - set(CompleteOptions.__dataclass_fields__))
+        if unknown:
+            raise GeometryError(f"unknown option(s) {', '.join(unknown)}; known: "
+                                f"{', '.join(sorted(CompleteOptions.__dataclass_fields__))}")
+        fields = {f: getattr(opts, f) for f in CompleteOptions.__dataclass_fields__}
+        fields.update(kwargs)
+        opts = CompleteOptions(**fields)
+    wing = _pick(cfg, opts.wing, "wing")
+    body0 = _pick(cfg, opts.body, "fuselage")
+    if not isinstance(body0, CircularBody):
+        raise GeometryError("the wing-body juncture of TM-4406 needs a circular fuselage; "
+                            f"{body0.name} is a {type(body0).__name__}", body0.name)
+    log = [f"complete: fillet={fillet}, keep_area={keep_area}, {opts}"]
+    make = _fillet_maker(wing, fillet, opts, body0)
+    if keep_area and fillet is not None:
+        comp = _keep_area(body0, make, tolerance=opts.tolerance)
+        body = comp.body
+        iu, il, fu, fl = comp.fillets
+        stations = {"x": comp.x, "area_original": comp.area_original,
+                    "area_fillet": comp.area_fillet, "area_body": comp.area_body,
+                    "radius_original": comp.radius_original, "radius_new": comp.radius_new,
+                    "residual": comp.residual, "iterations": comp.iterations.astype(float)}
+        log.append(f"keep_area: {comp.n_iterations} iterations, worst residual "
+                   f"{comp.residual.max():.3g}; radius reduced by up to "
+                   f"{np.max(comp.radius_original - comp.radius_new):.4g}")
+    else:
+        if keep_area:
+            log.append("keep_area: nothing to compensate without a fillet")
+        body = body0
+        iu, il, fu, fl = make(body)
+        if fillet is not None:
+            x, a_f = fillet_added_area(body, fu, fl, iu, il)
+        else:
+            x, a_f = fu.start[:, 0], np.zeros(len(fu.start))
+        a0 = np.pi * body.radius_at(x) ** 2
+        stations = {"x": x, "area_original": a0, "area_fillet": a_f, "area_body": a0,
+                    "radius_original": body.radius_at(x), "radius_new": body.radius_at(x),
+                    "residual": np.abs(a_f) / np.where(a0 > 0, a0, 1.0),
+                    "iterations": np.zeros(len(x))}
+    for part in (iu, il, fu, fl):
+        log.extend(part.log)
+    n_half = (body.points_per_section or (19,))[0]
+    if opts.single_network:
+        fl = _reinterpolated_lower(body, fu, fl)
+        nets, seams = _single_network(wing, body, fu, fl, n_half)
+    else:
+        nets, seams = juncture_networks(wing, body, fu, fl, opts.blocks, n_half)
+    for s in seams:
+        log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
+    sym = {k: "xz" for k in nets}
+    raw = cfg.to_geometry()
+    for comp_ in cfg:
+        if comp_.name in (wing.name, body0.name):
+            continue
+        for k in comp_.networks():
+            nets[k] = raw.networks[k]
+            if k in raw.symmetry:
+                sym[k] = raw.symmetry[k]
+    intersections = {f"{wing.name}/{body.name} upper": iu.points,
+                     f"{wing.name}/{body.name} lower": (fl.start if opts.single_network and
+                                                         fillet is None else il.points)}
+    fillets = {} if fillet is None else {"fillet upper": fu.points, "fillet lower": fl.points}
+    return Geometry(networks=nets, symmetry=sym, title=cfg.title, intersections=intersections,
+                    fillets=fillets, stations=stations, log=tuple(log))

@@ -1,0 +1,243 @@
+"""Added fillet area per station (TM-4406 eqs 11-14) and the fixed-area fuselage re-design.
+
+TM-4406 projects an upper fillet line and the corresponding lower one into the plane
+x = const, takes the polygon through five points of each (eq 11), and subtracts the wing root
+trapezoid (eq 12) and the circular segment of the body between the fillet start points
+(eq 13). Here the polygon holds *every* fillet point, and the two subtractions are done
+exactly: the added area is
+
+    A_net = area(F minus D) - area(W minus D)
+
+where F is the polygon (upper fillet line, wing end edge, lower fillet line reversed), W the
+wing quadrilateral (I_u, E_u, E_l, I_l) between the intersection and end points and D the
+body's disk at that station. Polygon-minus-disk areas come from the exact area of a polygon
+cut by a circle (a sum over edges of the signed area of the disk within each edge's triangle
+with the centre). When the fillet starts on the circle and the chord between the start points
+lies inside the body this is eqs 11-14 with all points; it stays right where the LE/TE blending
+pulls the start points off the circle.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ConvergenceError, GeometryError
+
+__all__ = ["polygon_disk_area", "fillet_added_area", "reduced_body", "keep_area",
+           "Compensation"]
+
+
+def _cross(u, v):
+    return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+
+
+def _angle(u, v):
+    return np.arctan2(_cross(u, v), (u * v).sum(-1))
+
+
+def polygon_disk_area(poly, center, radius):
+    """Signed area of polygon ∩ disk, vectorised over stations.
+
+    Parameters
+    ----------
+    poly : (m, k, 2) float
+        m closed polygons (the last vertex joins the first), any orientation; the sign of the
+        result follows it (counter-clockwise positive).
+    center : (m, 2) float
+    radius : (m,) float
+
+    Returns
+    -------
+    (m,) float
+    """
+    p = np.asarray(poly, float) - np.asarray(center, float)[:, None, :]
+    r = np.asarray(radius, float)[:, None]
+    a_pt, b_pt = p, np.roll(p, -1, axis=1)
+    d = b_pt - a_pt
+    qa = (d * d).sum(-1)
+    qb = 2.0 * (a_pt * d).sum(-1)
+    qc = (a_pt * a_pt).sum(-1) - r ** 2
+    disc = qb * qb - 4 * qa * qc
+    sq = np.sqrt(np.maximum(disc, 0.0))
+    safe = np.where(qa > 0, qa, 1.0)
+    t1 = np.where((disc > 0) & (qa > 0), (-qb - sq) / (2 * safe), 1.0)
+    t2 = np.where((disc > 0) & (qa > 0), (-qb + sq) / (2 * safe), 1.0)
+    s1 = np.clip(t1, 0.0, 1.0)
+    s2 = np.clip(np.maximum(t2, t1), 0.0, 1.0)
+    p1 = a_pt + s1[..., None] * d
+    p2 = a_pt + s2[..., None] * d
+    r2 = r ** 2
+    area = 0.5 * r2 * _angle(a_pt, p1) + 0.5 * _cross(p1, p2) + 0.5 * r2 * _angle(p2, b_pt)
+    # An edge that never enters the disk is a pure sector (the clipping above gives that too
+    # when s1 == s2, but keep degenerate zero-length edges at zero).
+    area = np.where(qa > 0, area, 0.0)
+    return area.sum(axis=1)
+
+
+def _polygon_area(poly):
+    q = np.roll(poly, -1, axis=1)
+    return 0.5 * _cross(poly, q).sum(axis=1)
+
+
+def fillet_added_area(body, upper, lower, upper_inter, lower_inter):
+    """Net added cross-sectional area of the fillet at each station (generalised eqs 11-14).
+
+    Parameters
+    ----------
+    body : CircularBody
+    upper, lower : FilletLines
+        Fillet lines of the upper and lower surfaces, paired by lofting-line index.
+    upper_inter, lower_inter : BodyIntersection
+        The intersections (their points are the wing root corners I_u, I_l).
+
+    Returns
+    -------
+    x : (m,) float
+        Station of each pair: the x of the upper fillet line's start [deck length].
+    area : (m,) float
+        Added area, >= 0 up to round-off [deck length^2].
+    """
+    fu, fl = upper.points, lower.points
+    x = fu[:, 0, 0]
+    ctr = body.center_at(x)
+    r = body.radius_at(x)
+    poly = np.concatenate([fu[..., 1:], fl[:, ::-1, 1:]], axis=1)  # (m, 2k, 2) in y-z
+    i_u = np.where(upper_inter.found[:, None], upper_inter.points, upper.start)[:, 1:]
+    i_l = np.where(lower_inter.found[:, None], lower_inter.points, lower.start)[:, 1:]
+    wing = np.stack([i_u, upper.end[:, 1:], lower.end[:, 1:], i_l], axis=1)
+    out = []
+    for shape in (poly, wing):
+        signed = _polygon_area(shape)
+        inside = polygon_disk_area(shape, ctr, r)
+        out.append(np.abs(signed - inside))
+    return x, out[0] - out[1]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Compensation:
+    """Result of :func:`keep_area`.
+
+    Attributes
+    ----------
+    body : CircularBody
+        The re-designed body: the original stations plus every fillet station, radius reduced
+        so that body area + fillet area equals the original area at each fillet station.
+    x : (m,) float
+        Fillet stations (x of the upper fillet lines' starts) of the final iteration.
+    area_original, area_fillet, area_body : (m,) float
+        pi r0(x)^2, the fillet's added area, pi r_new(x)^2 [deck length^2].
+    radius_original, radius_new : (m,) float
+    residual : (m,) float
+        |area_body + area_fillet - area_original| / area_original per station.
+    iterations : (m,) int
+        Iteration at which each station first met the tolerance.
+    n_iterations : int
+    fillets : tuple
+        (upper intersection, lower intersection, upper fillet, lower fillet) of the final body.
+    """
+
+    body: object
+    x: np.ndarray
+    area_original: np.ndarray
+    area_fillet: np.ndarray
+    area_body: np.ndarray
+    radius_original: np.ndarray
+    radius_new: np.ndarray
+    residual: np.ndarray
+    iterations: np.ndarray
+    n_iterations: int
+    fillets: tuple
+
+
+def reduced_body(body, x, area_removed):
+    """``body`` with the fillet stations ``x`` added and pi r^2 reduced by ``area_removed``.
+
+    The removed area is interpolated linearly between the stations (zero outside them) and
+    taken off at every station of the new body, so the new radius at a fillet station x_j is
+    exactly sqrt(r0(x_j)^2 - A_j / pi). Camber is kept. Raises GeometryError if the fillet
+    needs more area than the body has.
+    """
+    from ..model import CircularBody
+
+    order = np.argsort(x)
+    xs, a = np.asarray(x, float)[order], np.asarray(area_removed, float)[order]
+    xg = body.x_global
+    tol = 1e-12 * max(body.length, 1.0)
+    new_x, seg_sizes, start = [], [], 0
+    for size in body.segments:
+        sx = xg[start:start + size]
+        inner = xs[(xs > sx[0] + tol) & (xs < sx[-1] - tol)]
+        inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
+            if inner.size else inner
+        merged = np.union1d(sx, inner)
+        new_x.append(merged)
+        seg_sizes.append(merged.size)
+        start += size
+    xn = np.concatenate(new_x)
+    removed = np.interp(xn, xs, a, left=0.0, right=0.0)
+    r0 = body.radius_at(xn)
+    r2 = r0 ** 2 - removed / np.pi
+    if np.any(r2 < 0):
+        k = int(np.argmax(r2 < 0))
+        raise GeometryError(f"the fillet adds more area ({removed[k]:.4g}) than the body has "
+                            f"at x = {xn[k]:.6g} ({np.pi * r0[k] ** 2:.4g}); use a smaller "
+                            "fillet", body.name, f"x = {xn[k]:.6g}")
+    return CircularBody(body.name, xn - body.origin[0], np.sqrt(r2),
+                        body.center_at(xn)[:, 1] - body.origin[2], body.origin,
+                        tuple(seg_sizes), body.mirrored, body.axial, body.points_per_section)
+
+
+def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
+    """Shrink the body until body area + fillet area equals the original area (TM-4406).
+
+    Parameters
+    ----------
+    body : CircularBody
+        The original body.
+    make_fillets : callable
+        ``make_fillets(body) -> (upper_inter, lower_inter, upper_fillet, lower_fillet)``
+        for a given body (the fillet is rebuilt on each re-designed body).
+    tolerance : float
+        Relative area residual to reach at every fillet station.
+
+    Returns
+    -------
+    Compensation
+
+    Notes
+    -----
+    Each iteration removes the current fillet area from the original body (not from the
+    previous iterate), so the iteration is a fixed point A = A_fillet(body(A)) on the vector of
+    fillet areas; it converges as fast as the fillet area's sensitivity to the radius is small.
+    An Aitken (secant) step per station is used once two iterates exist.
+    """
+    current = body
+    first_met = None
+    history = []
+    for it in range(1, max_iterations + 1):
+        parts = make_fillets(current)
+        x, a_f = fillet_added_area(current, *parts[2:], *parts[:2])
+        a0 = np.pi * body.radius_at(x) ** 2
+        a_b = np.pi * current.radius_at(x) ** 2
+        residual = np.abs(a_b + a_f - a0) / np.where(a0 > 0, a0, 1.0)
+        met = residual <= tolerance
+        first_met = np.where(met, it, 0) if first_met is None else \
+            np.where((first_met == 0) & met, it, first_met)
+        if met.all():
+            return Compensation(current, x, a0, a_f, a_b, np.sqrt(a0 / np.pi),
+                                current.radius_at(x), residual, first_met, it, parts)
+        history.append(a_f)
+        target = a_f
+        if len(history) >= 3:  # Aitken's delta-squared on each station's area
+            a2, a1, a0_ = history[-1], history[-2], history[-3]
+            denom = a2 - 2 * a1 + a0_
+            with np.errstate(divide="ignore", invalid="ignore"):
+                acc = a2 - (a2 - a1) ** 2 / denom
+            ok = np.isfinite(acc) & (np.abs(denom) > 1e-14 * np.maximum(np.abs(a2), 1e-300))
+            target = np.where(ok, acc, a2)
+        current = reduced_body(body, x, target)
+    raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
+                           f"iterations (worst residual {residual.max():.3g} at x = "
+                           f"{x[np.argmax(residual)]:.6g})", body.name)

@@ -1,0 +1,115 @@
+"""Circular-arc fillet of radius rho(x) at constant x (TM-4406, "Circular-arc filleting", fig 8).
+
+On each lofting line, a point P is sought whose offset C = P + rho n lies at rho + r(x) from the
+body's section centre, n being the normal to the lofting line's direction projected into the
+plane x = const (pointing away from the wing surface: up for the upper surface). C is then at
+distance rho from the projected lofting line and from the body circle, so the arc of radius rho
+about C is tangent to both (fig 8(b)). The paper steps inboard along the lofting line with
+increments proportional to the error; here the same error is solved by the bracketed root
+finder of :mod:`juncture.intersect.rays` over all lofting lines at once.
+
+Along the fillet line x is constant, so at its end the derivatives of y and z with respect to
+arc length are continuous with the lofting line but that of x is not (as the paper notes).
+The leading/trailing-edge blending of the cubic fillet (eqs 8-10) is applied the same way so the
+leading edge stays sharp.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import GeometryError
+from ..intersect import BodyIntersection, find_crossings
+from .cubic import FilletLines, blend_factor
+
+__all__ = ["circular_fillet"]
+
+
+def _normals(lines, sign):
+    d = lines[:, 1] - lines[:, 0]
+    dp = np.stack([np.zeros(len(d)), d[:, 1], d[:, 2]], axis=1)
+    dp /= np.linalg.norm(dp, axis=1)[:, None]
+    # Rotate the projected direction by +90 deg in the y-z plane: (y, z) -> (-z, y); for a
+    # lofting line running outboard (+y) this points up.
+    n = np.stack([np.zeros(len(d)), -dp[:, 2], dp[:, 1]], axis=1) * sign
+    return dp, n
+
+
+def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
+                    n_points=9):
+    """Circular-arc fillet lines of radius ``radius`` for one surface.
+
+    Parameters
+    ----------
+    wing : WingLike
+    body : CircularBody
+    inter : BodyIntersection
+        Intersection of the same surface (used for the blending near the edges and for lines
+        where no arc fits).
+    radius : float or callable
+        rho [deck length], constant or a function of x (vectorised).
+    blend_length : float, optional
+        l_b of eq 8; default a tenth of the intersection's x extent.
+    n_points : int
+        Points per fillet line, equally spaced in angle along the arc.
+
+    Returns
+    -------
+    FilletLines
+        ``kind = "circular"``; ``u_end`` is the tangency point's section coordinate.
+    """
+    side = inter.side
+    sign = 1.0 if side == "upper" else -1.0
+    rho_of = radius if callable(radius) else (lambda x: np.full_like(np.asarray(x, float),
+                                                                     float(radius)))
+    lines = wing.lofting_lines(side)
+    m = lines.shape[0]
+    _, n = _normals(lines, sign)
+
+    def error(points):
+        x = points[..., 0]
+        rho = rho_of(x)
+        c = points + rho[..., None] * n.reshape((m,) + (1,) * (points.ndim - 2) + (3,))
+        ctr = body.center_at(x)
+        d = np.hypot(c[..., 1] - ctr[..., 0], c[..., 2] - ctr[..., 1])
+        return d - (body.radius_at(x) + rho)
+
+    if np.any(np.asarray(rho_of(lines[:, 0, 0])) <= 0):
+        raise GeometryError("circular fillet radius must be > 0", wing.name)
+    u_low = np.where(inter.found, inter.u, 0.0) - 1.0
+    cr = find_crossings(lines, error, np.minimum(u_low, -1.0))
+    P = cr.points
+    ok = cr.found
+    log = [f"{wing.name} {side}: circular fillet solved on {int(ok.sum())} of {m} lofting "
+           f"lines in {cr.iterations} iterations"]
+    x = np.where(ok, P[:, 0], inter.points[:, 0])
+    rho = rho_of(x)
+    C = P + rho[:, None] * n
+    ctr = body.center_at(x)
+    vec = np.stack([C[:, 1] - ctr[:, 0], C[:, 2] - ctr[:, 1]], axis=1)
+    theta_b = np.arctan2(vec[:, 1], vec[:, 0])
+    T = body.point(x, theta_b)
+    # Arc from T (on the body) to P (on the wing) about C, the short way round.
+    a0 = np.arctan2(T[:, 2] - C[:, 2], T[:, 1] - C[:, 1])
+    a1 = np.arctan2(P[:, 2] - C[:, 2], P[:, 1] - C[:, 1])
+    da = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
+    t = np.linspace(0.0, 1.0, int(n_points))
+    ang = a0[:, None] + da[:, None] * t[None, :]
+    f = np.stack([np.broadcast_to(x[:, None], ang.shape), C[:, 1, None] + rho[:, None] *
+                  np.cos(ang), C[:, 2, None] + rho[:, None] * np.sin(ang)], axis=-1)
+    I = np.where(inter.found[:, None], inter.points, T)
+    bad = ~ok | ~inter.found
+    for j in np.flatnonzero(bad):
+        log.append(f"{wing.name} {side} fillet line {j + 1}: no circular arc of radius "
+                   f"{rho[j]:.4g} fits between the lofting line and {body.name}; left sharp")
+    E = np.where(ok[:, None], P, I)
+    v = I[:, None] + t[None, :, None] * (E - I)[:, None]
+    x_i = inter.points[:, 0]
+    if blend_length is None:
+        blend_length = 0.1 * (np.nanmax(x_i) - np.nanmin(x_i))
+    beta = np.where(bad, 0.0, blend_factor(x_i, x_i[0], x_i[-1], blend_length))
+    f = np.where(bad[:, None, None], v, f)
+    pts = (1.0 - beta)[:, None, None] * v + beta[:, None, None] * f
+    return FilletLines(side, pts, np.where(bad[:, None], I, T), E, theta_b,
+                       np.where(ok, cr.u, inter.u), beta, np.zeros(m, bool), "circular",
+                       tuple(log))

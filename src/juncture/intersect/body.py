@@ -1,0 +1,135 @@
+"""Wing-like surface against a body: TM-4406 eqs 4-6 (circular), TM-4607 eq 8 (arbitrary).
+
+Every lofting line of one surface (upper or lower) of a wing, canard, tail, fin or pylon is
+extended towards the body's axis and cut with the body surface; see :mod:`.rays` for the
+root finder that replaces the paper's fixed-gain iteration.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import GeometryError
+from ..model import ArbitraryBody, CircularBody, WingLike
+from .rays import find_crossings
+
+__all__ = ["BodyIntersection", "intersect_body"]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class BodyIntersection:
+    """Intersection of one surface of a wing-like component with a body.
+
+    Attributes
+    ----------
+    name : str
+        ``"<wing>/<body> <side>"``, e.g. ``"wing/body upper"``.
+    side : {"upper", "lower"}
+    points : (n_stations, 3) float
+        One point per lofting line, leading edge first; NaN where the line misses the body.
+    u : (n_stations,) float
+        Section coordinate of each point on its lofting line (0 = root section, < 0 inboard
+        of it, between 0 and 1: between sections 1 and 2).
+    found : (n_stations,) bool
+        Lines that meet the body.
+    theta : (n_stations,) float
+        Body angle of each point [rad], TM-4406 convention (0 horizontal, +pi/2 top); NaN
+        where missed. For an arbitrary body: normalised arc length (0 bottom, 1 top).
+    n_crossings : (n_stations,) int
+        Sign changes seen along each line; 2 or more means the line crosses the body twice
+        and the first crossing reached coming inboard was taken.
+    iterations : int
+    residual : (n_stations,) float
+        Distance of each point from the body surface [deck length].
+    log : tuple of str
+    """
+
+    name: str
+    side: str
+    points: np.ndarray
+    u: np.ndarray
+    found: np.ndarray
+    theta: np.ndarray
+    n_crossings: np.ndarray
+    iterations: int
+    residual: np.ndarray
+    log: tuple = ()
+
+
+def _error_function(body):
+    if isinstance(body, CircularBody):
+        return body.radial_error
+    if isinstance(body, ArbitraryBody):
+        return body.signed_distance
+    raise GeometryError(f"cannot intersect with a {type(body).__name__}", body)
+
+
+def _body_angle(body, pts):
+    if isinstance(body, CircularBody):
+        c = body.center_at(pts[:, 0])
+        return np.arctan2(pts[:, 2] - c[:, 1], pts[:, 1] - c[:, 0])
+    # Arbitrary body: normalised arc length of the nearest point of the interpolated section.
+    sec = body._sections_at(pts[:, 0])  # (m, k, 2)
+    d = np.hypot(sec[..., 0] - np.abs(pts[:, 1:2]), sec[..., 1] - pts[:, 2:3])
+    return np.argmin(d, axis=1) / (sec.shape[1] - 1)
+
+
+def _u_axis(wing, body, lines):
+    """Section coordinate at which each line reaches the body's axis (the search limit)."""
+    s = wing.span_stations
+    if wing.span_axis == 1:
+        centre = body.origin[1] if isinstance(body, CircularBody) else 0.0
+        c = np.full(lines.shape[0], centre)
+    else:
+        x_root = lines[:, 0, 0]
+        c = body.center_at(x_root)[:, 1] if isinstance(body, CircularBody) else \
+            np.array([np.mean(body._sections_at(x)[:, 1]) for x in x_root])
+    return (c - s[0]) / (s[1] - s[0])
+
+
+def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24):
+    """Intersection line of one surface of ``wing`` with ``body`` (TM-4406 eqs 4-6).
+
+    Parameters
+    ----------
+    wing : WingLike
+    body : CircularBody or ArbitraryBody
+    side : {"upper", "lower"}
+        For fins and pylons "upper" is the outboard side.
+
+    Returns
+    -------
+    BodyIntersection
+
+    Raises
+    ------
+    GeometryError
+        If the tip of a lofting line lies inside the body (the wing does not leave it).
+    """
+    lines = wing.lofting_lines(side)  # (n_stations, n_sections, 3)
+    error = _error_function(body)
+    tip_err = error(lines[:, -1])
+    if np.any(tip_err <= 0):
+        j = int(np.argmax(tip_err <= 0))
+        raise GeometryError(f"the tip of {side} lofting line {j + 1} lies inside {body.name}: "
+                            "the surface never leaves the body", wing.name, wing.n_sections)
+    u_low = np.minimum(_u_axis(wing, body, lines), 0.0)
+    cr = find_crossings(lines, error, u_low, samples_per_section)
+    pts = cr.points
+    theta = np.full(len(pts), np.nan)
+    if cr.found.any():
+        theta[cr.found] = _body_angle(body, pts[cr.found])
+    name = f"{wing.name}/{body.name} {side}"
+    log = []
+    for j in np.flatnonzero(cr.n_crossings >= 2):
+        log.append(f"{name}: lofting line {j + 1} crosses {body.name} "
+                   f"{int(cr.n_crossings[j])} times; took the first reached coming inboard "
+                   f"(u = {cr.u[j]:.6g})")
+    for j in np.flatnonzero(~cr.found):
+        log.append(f"{name}: lofting line {j + 1} misses {body.name}")
+    log.append(f"{name}: {int(cr.found.sum())} of {len(pts)} lines solved in {cr.iterations} "
+               f"iterations, max residual {np.nanmax(cr.residual, initial=0.0):.3g}")
+    return BodyIntersection(name, side, pts, cr.u, cr.found, theta, cr.n_crossings,
+                            cr.iterations, cr.residual, tuple(log))

@@ -1,0 +1,165 @@
+"""Output networks of a wing-body juncture (TM-4406 "Output and Surface Grid Considerations").
+
+Four blocks: the body ahead of the wing, the upper and lower wing regions, the body aft of the
+wing. In a wing-region block each n-line runs along one lofting line: the body cross-section
+arc from the top (bottom) of the body down (up) to the fillet start, the fillet line, then the
+lofting line at the input airfoil sections outboard of the fillet end (section 1, replaced by
+the fillet, is left out). The six-block option separates the body arcs ("body upper",
+"body lower") from the wing ("wing upper", "wing lower"), whose n-lines are spanwise
+stations: the first n-line is the line where wing (and fillet) meet the body, i.e. the
+intersection line when there is no fillet.
+
+The body ahead and aft uses, at every station, the point distribution of the wing region's
+end arcs (TM-4406 fig 5: points below and above the wing leading-edge intersection angle
+theta_w in proportion to arc length), so neighbouring blocks share identical boundary points.
+All networks are oriented with outward normals (docs/conventions.md).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["split_counts", "arc_points", "orient", "juncture_networks"]
+
+
+def split_counts(theta_w, n_points):
+    """Points below / above theta_w for a half-section of ``n_points`` (TM-4406 fig 5).
+
+    The share below is the arc from -pi/2 to theta_w over pi; both parts get at least 2 points
+    and share the point at theta_w.
+    """
+    frac = (theta_w + 0.5 * np.pi) / np.pi
+    n_below = int(np.clip(round(frac * (n_points - 1)) + 1, 2, n_points - 1))
+    return n_below, n_points - n_below + 1
+
+
+def arc_points(body, x, theta_from, theta_to, n):
+    """(m, n, 3) points on the body circles at stations x, theta from -> to (equal steps)."""
+    t = np.linspace(0.0, 1.0, n)
+    th = np.asarray(theta_from, float)[:, None] + t[None, :] * (
+        np.asarray(theta_to, float) - np.asarray(theta_from, float))[:, None]
+    return body.point(np.asarray(x, float)[:, None], th)
+
+
+def orient(net, outward):
+    """Reverse the n-line order if the network's normals point against ``outward``.
+
+    ``outward`` (3,) is a reference direction, or a callable (points (..., 3)) -> (..., 3).
+    The decision is by the sum over all quads of normal . outward (robust to degenerate quads).
+    """
+    a = net[:-1, :-1]
+    n = np.cross(net[:-1, 1:] - a, net[1:, :-1] - a)
+    ref = outward(a) if callable(outward) else np.broadcast_to(outward, a.shape)
+    return net if np.sum(n * ref) >= 0 else net[::-1]
+
+
+def _radial(body):
+    def out(p):
+        c = body.center_at(p[..., 0])
+        r = np.zeros_like(p)
+        r[..., 1] = p[..., 1] - c[..., 0]
+        r[..., 2] = p[..., 2] - c[..., 1]
+        return r
+    return out
+
+
+def _strip(wing, fillet, side, k_first):
+    """(n_stations, n_span, 3): fillet points then the lofting line at sections >= k_first."""
+    sec = wing.lofting_lines(side)[:, k_first:]
+    return np.concatenate([fillet.points, sec], axis=1)
+
+
+def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None):
+    """Output networks of a wing-body juncture, and the gaps along their shared seams.
+
+    Parameters
+    ----------
+    wing : WingLike
+    body : CircularBody
+        The (possibly re-designed) body.
+    upper, lower : FilletLines
+        Fillet lines of each surface; for no fillet, degenerate lines at the intersection
+        (see :func:`juncture.complete.sharp_fillet`).
+    blocks : {4, 6}
+    n_body_points : int, optional
+        Points per half cross-section of the body ahead and aft (default: the body's own
+        ``points_per_section`` or 19).
+
+    Returns
+    -------
+    networks : dict of str to (n_lines, n_points, 3)
+    seams : list of dict
+        ``{"a", "b", "seam", "max_gap", "points"}`` for every pair of networks that abut, the
+        largest distance between their corresponding boundary points [deck length].
+    """
+    from .errors import GeometryError
+
+    if blocks not in (4, 6):
+        raise GeometryError(f"blocks must be 4 or 6, found {blocks!r}")
+    u_end = np.concatenate([upper.u_end, lower.u_end])
+    k_first = min(max(int(np.floor(np.nanmax(u_end))) + 1, 1), wing.n_sections - 1)
+    n_half = n_body_points or (body.points_per_section or (19,))[0]
+    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half)
+    top, bottom = 0.5 * np.pi, -0.5 * np.pi
+    xu, xl = upper.start[:, 0], lower.start[:, 0]
+    arc_u = arc_points(body, xu, np.full(xu.size, top), upper.theta_start, n_above)
+    arc_l = arc_points(body, xl, np.full(xl.size, bottom), lower.theta_start, n_below)
+    strip_u = _strip(wing, upper, "upper", k_first)
+    strip_l = _strip(wing, lower, "lower", k_first)
+    xg = body.x_global
+    x_le, x_te = xu[0], xu[-1]
+    ahead = np.concatenate([xg[xg < x_le], [x_le]])
+    aft = np.concatenate([[x_te], xg[xg > x_te]])
+
+    def sections(xs, theta_lo, theta_hi):
+        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, theta_lo),
+                           n_below)
+        above = arc_points(body, xs, np.full(xs.size, theta_hi), np.full(xs.size, top), n_above)
+        return np.concatenate([below, above[:, 1:]], axis=1)
+
+    fwd = sections(ahead, lower.theta_start[0], upper.theta_start[0])
+    aft_net = sections(aft, lower.theta_start[-1], upper.theta_start[-1])
+    seams = []
+
+    def seam(a, b, name, pa, pb):
+        seams.append({"a": a, "b": b, "seam": name, "points": int(len(pa)),
+                      "max_gap": float(np.linalg.norm(pa - pb, axis=-1).max())})
+
+    nets = {"body forward": fwd}
+    if blocks == 4:
+        reg_u = np.concatenate([arc_u, strip_u[:, 1:]], axis=1)
+        reg_l = np.concatenate([arc_l, strip_l[:, 1:]], axis=1)
+        nets["wing-body upper"], nets["wing-body lower"] = reg_u, reg_l
+        names_u, names_l = "wing-body upper", "wing-body lower"
+        wing_u, wing_l = reg_u[:, n_above - 1:], reg_l[:, n_below - 1:]
+    else:
+        nets["body upper"], nets["body lower"] = arc_u, arc_l
+        nets["wing upper"] = np.swapaxes(strip_u, 0, 1)
+        nets["wing lower"] = np.swapaxes(strip_l, 0, 1)
+        names_u, names_l = "body upper", "body lower"
+        wing_u, wing_l = strip_u, strip_l
+        seam("body upper", "wing upper", "fillet start line", arc_u[:, -1], strip_u[:, 0])
+        seam("body lower", "wing lower", "fillet start line", arc_l[:, -1], strip_l[:, 0])
+    nets["body aft"] = aft_net
+    for net_name, end, xs_net in (("body forward", 0, fwd), ("body aft", -1, aft_net)):
+        ring = xs_net[-1] if end == 0 else xs_net[0]
+        seam(net_name, names_u, "cross-section above the wing", ring[n_below - 1:],
+             arc_u[end][::-1])
+        seam(net_name, names_l, "cross-section below the wing", ring[:n_below], arc_l[end])
+    wu, wl = ("wing upper", "wing lower") if blocks == 6 else (names_u, names_l)
+    seam(wu, wl, "leading-edge lofting line", wing_u[0], wing_l[0])
+    seam(wu, wl, "trailing-edge lofting line", wing_u[-1], wing_l[-1])
+    outward = {"body forward": _radial(body), "body aft": _radial(body),
+               "body upper": _radial(body), "body lower": _radial(body),
+               "wing-body upper": np.array([0.0, 0.0, 1.0]),
+               "wing upper": np.array([0.0, 0.0, 1.0]),
+               "wing-body lower": np.array([0.0, 0.0, -1.0]),
+               "wing lower": np.array([0.0, 0.0, -1.0])}
+    nets = {k: orient(v, outward[k]) for k, v in nets.items()}
+    return {k: nets[k] for k in sorted(nets, key=_block_order)}, seams
+
+
+def _block_order(name):
+    order = ["body forward", "wing-body upper", "wing-body lower", "body upper", "body lower",
+             "wing upper", "wing lower", "body aft"]
+    return order.index(name) if name in order else len(order)
