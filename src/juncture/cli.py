@@ -127,6 +127,13 @@ def _cmd_demo(args):
     return 0
 
 
+def _cmd_massprops(args):
+    from .massprops.command import run_massprops
+
+    print(run_massprops(args.file, as_json=args.json, density=args.density), end="")
+    return 0
+
+
 def _build_parser():
     from .io import reader_formats, writer_formats
 
@@ -148,6 +155,14 @@ def _build_parser():
     s.add_argument("--to", dest="output_format", choices=writer_formats(),
                    help="output format (default: by extension)")
     s.set_defaults(func=_cmd_convert)
+
+    s = sub.add_parser("massprops", help="mass, CG and inertia of a spec or of every deck "
+                       "component")
+    s.add_argument("file", help="JSON mass-properties spec, wave-drag deck or juncture model")
+    s.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    s.add_argument("--density", type=float,
+                   help="deck/model only: density of every component (default 1: mass = volume)")
+    s.set_defaults(func=_cmd_massprops)
 
     s = sub.add_parser("demo", help="run the main job on the bundled supersonic transport")
     s.add_argument("-o", "--output", default="demo-output", help="output directory")

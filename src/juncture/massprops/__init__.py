@@ -4,6 +4,7 @@ Every producer returns a :class:`MassProperties` in project axes (x aft, y right
 bodies add by the parallel-axis theorem, and negative densities subtract material.
 """
 
+from .configuration import component_mass_properties, configuration_mass_properties
 from .properties import MassProperties
 from .rotor import Rotor, rotor_disk_integrals
 from .solids import Cuboid, Cylinder, PointMass, Sphere
@@ -32,4 +33,6 @@ __all__ = [
     "evaluate_spec",
     "spec_report_json",
     "format_table",
+    "configuration_mass_properties",
+    "component_mass_properties",
 ]
