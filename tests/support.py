@@ -8,3 +8,33 @@ PDAS_DECK = SHARED / "wavedrag" / "pdas_wdcase1_wing_3segment_circular_body.inp"
 PDAS_WGS = SHARED / "lawgs" / "pdas_wdcase1_wd2wgs_output.wgs"
 LAWGS_DIR = SHARED / "lawgs"
 EXAMPLE_DECK = ROOT / "examples" / "supersonic_transport.inp"
+
+
+def wing_body(z_root=0.0, dihedral_deg=0.0, root_y=1.0, radius=3.0, sweep_deg=40.0,
+              n_sections=4, n_stations=11, thickness=4.0, camber=0.0, body_camber=0.0):
+    """A configuration built in code: a swept, tapered wing on a cylinder with ogive ends.
+
+    Stations and sections have different counts; everything is slightly perturbed away from
+    symmetric cases. Units are arbitrary (body length 60).
+    """
+    import numpy as np
+
+    from juncture.model import CircularBody, Configuration, WingLike
+
+    x = np.array([0.0, 3.0, 7.0, 12.0, 18.0, 26.0, 34.0, 42.0, 48.0, 53.0, 57.0, 60.0])
+    xi = x / 60.0
+    r = radius * np.clip(np.minimum(xi / 0.3, (1 - xi) / 0.25), 0.0, 1.0) ** 0.6
+    r[0] = 0.0
+    body = CircularBody("body", x, r, body_camber * np.sin(np.pi * xi), segments=(12,))
+    y = root_y + np.linspace(0.0, 14.0, n_sections) ** 1.02
+    t = np.tan(np.radians(sweep_deg))
+    chord = np.linspace(22.0, 7.0, n_sections)
+    le = np.stack([16.0 + (y - root_y) * t, y,
+                   z_root + (y - root_y) * np.tan(np.radians(dihedral_deg))], axis=1)
+    xc = np.linspace(0.0, 100.0, n_stations) ** 1.0
+    half = thickness / 2 * np.sqrt(np.maximum(4 * xc / 100 * (1 - xc / 100), 0.0))
+    up = np.tile(half, (n_sections, 1)) * np.linspace(1.0, 0.8, n_sections)[:, None]
+    cam = camber * chord[:, None] / 100.0 * 4 * xc / 100 * (1 - xc / 100)
+    wing = WingLike("wing", "wing", le, chord, xc, up, up * 0.9, cam)
+    return Configuration({"wing": wing, "body": body}, title="test wing-body",
+                         reference_area=500.0)

@@ -9,6 +9,7 @@ Public API::
 Axes as in the wave-drag deck: x aft, y to starboard, z up; only the y >= 0 half is described.
 """
 
+from .complete import CompleteOptions, complete
 from .errors import (
                      ConvergenceError,
                      DeckError,
@@ -26,6 +27,8 @@ __version__ = "0.1.0"
 __all__ = [
     "read",
     "write",
+    "complete",
+    "CompleteOptions",
     "Geometry",
     "JunctureError",
     "DeckError",

@@ -10,8 +10,9 @@ finder of :mod:`juncture.intersect.rays` over all lofting lines at once.
 
 Along the fillet line x is constant, so at its end the derivatives of y and z with respect to
 arc length are continuous with the lofting line but that of x is not (as the paper notes).
-The leading/trailing-edge blending of the cubic fillet (eqs 8-10) is applied the same way so the
-leading edge stays sharp.
+Towards the leading and trailing edges the radius is scaled by the blending function beta(L)
+of eqs 8-9 (the cubic fillet's ``blending="scale"``), so the edges stay sharp and every fillet
+line starts on the body.
 """
 
 from __future__ import annotations
@@ -44,12 +45,13 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     wing : WingLike
     body : CircularBody
     inter : BodyIntersection
-        Intersection of the same surface (used for the blending near the edges and for lines
-        where no arc fits).
+        Intersection of the same surface.
     radius : float or callable
         rho [deck length], constant or a function of x (vectorised).
     blend_length : float, optional
-        l_b of eq 8; default a tenth of the intersection's x extent.
+        l_b of eq 8; default a tenth of the intersection's x extent. Towards the leading and
+        trailing edges the radius is scaled by beta(L) (eq 9), so the fillet shrinks to the
+        sharp intersection there and always starts on the body.
     n_points : int
         Points per fillet line, equally spaced in angle along the arc.
 
@@ -64,52 +66,61 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
                                                                      float(radius)))
     lines = wing.lofting_lines(side)
     m = lines.shape[0]
-    _, n = _normals(lines, sign)
-
-    def error(points):
-        x = points[..., 0]
-        rho = rho_of(x)
-        c = points + rho[..., None] * n.reshape((m,) + (1,) * (points.ndim - 2) + (3,))
-        ctr = body.center_at(x)
-        d = np.hypot(c[..., 1] - ctr[..., 0], c[..., 2] - ctr[..., 1])
-        return d - (body.radius_at(x) + rho)
-
     if np.any(np.asarray(rho_of(lines[:, 0, 0])) <= 0):
         raise GeometryError("circular fillet radius must be > 0", wing.name)
-    u_low = np.where(inter.found, inter.u, 0.0) - 1.0
-    cr = find_crossings(lines, error, np.minimum(u_low, -1.0))
-    P = cr.points
-    ok = cr.found
-    log = [f"{wing.name} {side}: circular fillet solved on {int(ok.sum())} of {m} lofting "
-           f"lines in {cr.iterations} iterations"]
-    x = np.where(ok, P[:, 0], inter.points[:, 0])
-    rho = rho_of(x)
-    C = P + rho[:, None] * n
-    ctr = body.center_at(x)
-    vec = np.stack([C[:, 1] - ctr[:, 0], C[:, 2] - ctr[:, 1]], axis=1)
-    theta_b = np.arctan2(vec[:, 1], vec[:, 0])
-    T = body.point(x, theta_b)
-    # Arc from T (on the body) to P (on the wing) about C, the short way round.
-    a0 = np.arctan2(T[:, 2] - C[:, 2], T[:, 1] - C[:, 1])
-    a1 = np.arctan2(P[:, 2] - C[:, 2], P[:, 1] - C[:, 1])
-    da = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
-    t = np.linspace(0.0, 1.0, int(n_points))
-    ang = a0[:, None] + da[:, None] * t[None, :]
-    f = np.stack([np.broadcast_to(x[:, None], ang.shape), C[:, 1, None] + rho[:, None] *
-                  np.cos(ang), C[:, 2, None] + rho[:, None] * np.sin(ang)], axis=-1)
-    I = np.where(inter.found[:, None], inter.points, T)
-    bad = ~ok | ~inter.found
-    for j in np.flatnonzero(bad):
-        log.append(f"{wing.name} {side} fillet line {j + 1}: no circular arc of radius "
-                   f"{rho[j]:.4g} fits between the lofting line and {body.name}; left sharp")
-    E = np.where(ok[:, None], P, I)
-    v = I[:, None] + t[None, :, None] * (E - I)[:, None]
-    x_i = inter.points[:, 0]
+    x_i = np.where(inter.found, inter.points[:, 0], lines[:, 0, 0])
     if blend_length is None:
-        blend_length = 0.1 * (np.nanmax(x_i) - np.nanmin(x_i))
-    beta = np.where(bad, 0.0, blend_factor(x_i, x_i[0], x_i[-1], blend_length))
-    f = np.where(bad[:, None, None], v, f)
-    pts = (1.0 - beta)[:, None, None] * v + beta[:, None, None] * f
-    return FilletLines(side, pts, np.where(bad[:, None], I, T), E, theta_b,
-                       np.where(ok, cr.u, inter.u), beta, np.zeros(m, bool), "circular",
-                       tuple(log))
+        blend_length = 0.1 * (x_i.max() - x_i.min())
+    beta = np.where(inter.found, blend_factor(x_i, x_i[0], x_i[-1], blend_length), 0.0)
+    live = beta > 0
+    _, n = _normals(lines, sign)
+    log = []
+    I = inter.points.copy()
+    theta_b = inter.theta.copy()
+    u_end = inter.u.copy()
+    pts = np.repeat(I[:, None, :], int(n_points), axis=1)
+    start, E = I.copy(), I.copy()
+    if live.any():
+        ln, nn, bb = lines[live], n[live], beta[live]
+        k = len(ln)
+
+        def error(points):
+            x = points[..., 0]
+            shape = (k,) + (1,) * (points.ndim - 2)
+            rho = bb.reshape(shape) * rho_of(x)
+            c = points + rho[..., None] * nn.reshape(shape + (3,))
+            ctr = body.center_at(x)
+            d = np.hypot(c[..., 1] - ctr[..., 0], c[..., 2] - ctr[..., 1])
+            return d - (body.radius_at(x) + rho)
+
+        u_low = np.minimum(inter.u[live] - 1.0, -1.0)
+        cr = find_crossings(ln, error, u_low)
+        log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "
+                   f"{k} lofting lines in {cr.iterations} iterations")
+        idx = np.flatnonzero(live)
+        for j in idx[~cr.found]:
+            log.append(f"{wing.name} {side} fillet line {j + 1}: no circular arc fits between "
+                       f"the lofting line and {body.name}; left sharp")
+        ok = cr.found
+        P = cr.points[ok]
+        rows = idx[ok]
+        x = P[:, 0]
+        rho = beta[rows] * rho_of(x)
+        C = P + rho[:, None] * n[rows]
+        ctr = body.center_at(x)
+        th = np.arctan2(C[:, 2] - ctr[:, 1], C[:, 1] - ctr[:, 0])
+        T = body.point(x, th)
+        # Arc from T (on the body) to P (on the wing) about C, the short way round.
+        a0 = np.arctan2(T[:, 2] - C[:, 2], T[:, 1] - C[:, 1])
+        a1 = np.arctan2(P[:, 2] - C[:, 2], P[:, 1] - C[:, 1])
+        da = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
+        t = np.linspace(0.0, 1.0, int(n_points))
+        ang = a0[:, None] + da[:, None] * t[None, :]
+        pts[rows] = np.stack([np.broadcast_to(x[:, None], ang.shape),
+                              C[:, 1, None] + rho[:, None] * np.cos(ang),
+                              C[:, 2, None] + rho[:, None] * np.sin(ang)], axis=-1)
+        start[rows], E[rows], theta_b[rows], u_end[rows] = T, P, th, cr.u[ok]
+        beta = beta.copy()
+        beta[idx[~ok]] = 0.0
+    return FilletLines(side, pts, start, E, theta_b, u_end, beta, np.zeros(m, bool),
+                       "circular", tuple(log))

@@ -178,7 +178,7 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         x_ref = lines[:, 0, 0] if upper_reference is None else np.where(
             upper_reference.found, upper_reference.points[:, 0], lines[:, 0, 0])
         x_b[missed] = x_ref[missed]
-        theta_i[missed] = -0.5 * np.pi * sign
+        theta_i[missed] = 0.5 * np.pi * sign  # the bottom for the lower surface
         I[missed] = body.point(x_b[missed], theta_i[missed])
         u_full = np.where(missed, 0.0, u_full)
         for j in np.flatnonzero(missed):

@@ -65,7 +65,8 @@ class _Piecewise:
         for a, b in bounds:
             xs, ys = x[a:b], columns[a:b]
             if method == "pchip":
-                pp = PchipInterpolator(xs, ys, axis=0)
+                with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+                    pp = PchipInterpolator(xs, ys, axis=0)  # flat pieces divide by 0 inside
                 c = pp.c  # (4, n-1, cols), local coordinate x - x_k
             else:
                 slope = np.diff(ys, axis=0) / np.diff(xs)[:, None]

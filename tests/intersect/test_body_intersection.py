@@ -1,0 +1,105 @@
+"""Wing / circular-body intersection (TM-4406 eqs 4-6): points on both surfaces."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from juncture.errors import GeometryError
+from juncture.intersect import find_crossings, intersect_body
+from juncture.model import CircularBody, WingLike
+from tests.support import wing_body
+
+
+def distance_to_line(p, a, b):
+    d = (b - a) / np.linalg.norm(b - a, axis=-1)[..., None]
+    v = p - a
+    return np.linalg.norm(v - (v * d).sum(-1)[..., None] * d, axis=-1)
+
+
+def check_on_both(cfg, side):
+    wing, body = cfg["wing"], cfg["body"]
+    res = intersect_body(wing, body, side)
+    L = body.length
+    lines = wing.lofting_lines(side)
+    p = res.points[res.found]
+    # On the body: independent of the solver's own error function, from r(x) and c(x).
+    ctr = np.array([[0.0, body.center_at(x)[1]] for x in p[:, 0]])
+    dist = np.hypot(p[:, 1] - ctr[:, 0], p[:, 2] - ctr[:, 1])
+    assert np.all(np.abs(dist - body.radius_at(p[:, 0])) < 1e-9 * L)
+    # On the extended lofting line: the segment (or its extension) the point's u says.
+    k = np.clip(np.floor(res.u[res.found]).astype(int), 0, wing.n_sections - 2)
+    rows = np.flatnonzero(res.found)
+    assert np.all(distance_to_line(p, lines[rows, k], lines[rows, k + 1]) < 1e-9 * L)
+    return res
+
+
+@settings(max_examples=40, deadline=None)
+@given(z=st.floats(-2.2, 2.2), dihedral=st.floats(-6.0, 8.0), root_y=st.floats(-0.5, 4.5),
+       camber=st.floats(0.0, 2.0), body_camber=st.floats(-0.5, 0.5))
+def test_points_lie_on_the_body_and_on_their_lofting_lines(z, dihedral, root_y, camber,
+                                                           body_camber):
+    """High, mid and low wings; dihedral; root inside, on or outside the body."""
+    cfg = wing_body(z_root=z, dihedral_deg=dihedral, root_y=root_y, camber=camber,
+                    body_camber=body_camber)
+    for side in ("upper", "lower"):
+        res = check_on_both(cfg, side)
+        assert res.found.all()
+
+
+def test_root_inside_the_body_gives_points_between_sections_1_and_2():
+    res = intersect_body(*[wing_body(root_y=1.0)[n] for n in ("wing", "body")], "upper")
+    assert np.all((res.u > 0) & (res.u < 1))
+    res = intersect_body(*[wing_body(root_y=4.5)[n] for n in ("wing", "body")], "upper")
+    assert np.all(res.u < 0)  # root outside: extrapolated inboard (eq 4, t > 0)
+
+
+def test_mid_wing_angle_is_near_zero_and_high_wing_positive():
+    mid = intersect_body(*[wing_body(z_root=0.0)[n] for n in ("wing", "body")], "upper")
+    high = intersect_body(*[wing_body(z_root=2.0)[n] for n in ("wing", "body")], "upper")
+    assert np.all(np.abs(mid.theta) < 0.4) and np.all(high.theta > 0.5)
+
+
+def test_a_lower_line_that_misses_the_body_is_reported():
+    # Wing hanging far below a thin body: its lower lofting lines never reach it.
+    cfg = wing_body(z_root=-2.9, dihedral_deg=-25.0, radius=3.0, root_y=0.2)
+    res = intersect_body(cfg["wing"], cfg["body"], "lower")
+    assert (~res.found).any()
+    assert any("misses body" in s for s in res.log)
+    assert np.isnan(res.points[~res.found]).all()
+
+
+def test_double_crossing_takes_the_first_reached_coming_inboard():
+    # A line that passes through a bump of the body twice: a body of two bulges.
+    x = np.linspace(0.0, 40.0, 41)
+    r = 2.0 + 1.5 * np.cos(2 * np.pi * x / 20.0)
+    body = CircularBody("body", x, r, axial="linear")
+    # Sections at y = 6 and 8, sloping so the extension crosses the bulges at x ~ 20 and ~ 0.
+    le = np.array([[25.0, 6.0, 0.0], [31.0, 8.0, 0.0]])
+    wing = WingLike("wing", "wing", le, [2.0, 2.0], [0.0, 100.0], [[0.0, 0.0], [0.0, 0.0]])
+    res = intersect_body(wing, body, "upper")
+    assert res.n_crossings.max() >= 2 and any("crosses body" in s for s in res.log)
+    # First reached coming inboard = the largest u (closest to the tip) among the crossings.
+    u = np.linspace(-4.0, 1.0, 200001)
+    pts = le[0] + u[:, None] * (le[1] - le[0])
+    e = body.radial_error(pts)
+    entering = np.flatnonzero((e[:-1] <= 0) & (e[1:] > 0))  # inside just inboard of outside
+    assert res.u[0] == pytest.approx(u[entering.max()], abs=1e-4)
+
+
+def test_tip_inside_the_body_is_an_error():
+    cfg = wing_body(root_y=0.0)
+    wing = cfg["wing"]
+    small = WingLike("wing", "wing", wing.le * [1, 0.1, 1], wing.chord, wing.x_over_c,
+                     wing.upper)
+    with pytest.raises(GeometryError, match=r"wing, station 4: the tip of upper lofting line 1 "
+                                            r"lies inside body"):
+        intersect_body(small, cfg["body"], "upper")
+
+
+def test_find_crossings_solves_a_line_against_a_sphere_exactly():
+    # Independent closed form: line x = 0, z = 0, y from 10 down, sphere radius 2 at origin.
+    lines = np.array([[[0.0, 6.0, 0.0], [0.0, 10.0, 0.0]]])
+    res = find_crossings(lines, lambda p: np.linalg.norm(p, axis=-1) - 2.0, -3.0)
+    assert res.found[0] and res.points[0] == pytest.approx([0.0, 2.0, 0.0], abs=1e-12)
+    assert res.u[0] == pytest.approx(-1.0, abs=1e-12)

@@ -1,0 +1,94 @@
+"""complete(): networks, intersections, fillets, stations and seams of a wing-body juncture."""
+
+import re
+import warnings
+
+import numpy as np
+import pytest
+
+import juncture as jc
+from tests.support import EXAMPLE_DECK, wing_body
+
+
+def example():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.read(EXAMPLE_DECK)
+
+
+def seam_gaps(geo):
+    return [float(m.group(1)) for m in (re.search(r"max gap ([-0-9.e+]+)", s)
+                                        for s in geo.log) if m]
+
+
+@pytest.mark.parametrize("fillet", [None, "cubic", "circular"])
+@pytest.mark.parametrize("blocks", [4, 6])
+def test_blocks_abut_exactly(fillet, blocks):
+    geo = jc.complete(example(), fillet, blocks=blocks)
+    expect = {4: {"body forward", "wing-body upper", "wing-body lower", "body aft"},
+              6: {"body forward", "body upper", "body lower", "wing upper", "wing lower",
+                  "body aft"}}[blocks]
+    assert expect <= set(geo.networks)
+    gaps = seam_gaps(geo)
+    assert len(gaps) >= 6 and max(gaps) < 1e-12
+    # Other components pass through untouched.
+    assert {"tail 1 upper", "fin 3 outboard", "pod 1"} <= set(geo.networks)
+
+
+def test_six_block_wing_starts_with_the_intersection_line():
+    cfg = example()
+    geo = jc.complete(cfg, None, blocks=6)
+    np.testing.assert_allclose(geo.networks["wing upper"][0],
+                               geo.intersections["wing/body upper"], atol=1e-12)
+    # The remaining n-lines are the input airfoil sections outboard of it.
+    np.testing.assert_allclose(geo.networks["wing upper"][1:],
+                               cfg["wing"].section_points("upper")[1:], atol=1e-12)
+
+
+def test_fillets_run_from_body_to_wing():
+    cfg = example()
+    geo = jc.complete(cfg, "cubic")
+    body, wing = cfg["body"], cfg["wing"]
+    fu = geo.fillets["fillet upper"]
+    assert fu.shape == (wing.n_stations, 9, 3)
+    assert np.abs(body.radial_error(fu[:, 0])).max() < 1e-9 * body.length
+    assert np.all(np.abs(body.radial_error(fu[1:-1, -1])) > 1e-3)  # ends off the body
+
+
+def test_keep_area_on_the_example():
+    geo = jc.complete(example(), "cubic", keep_area=True)
+    s = geo.stations
+    np.testing.assert_allclose(np.pi * s["radius_new"] ** 2 + s["area_fillet"],
+                               s["area_original"], rtol=1e-9)
+    assert s["area_fillet"][1:-1].min() > 0
+
+
+def test_single_network_fuselage():
+    geo = jc.complete(example(), "cubic", single_network=True)
+    body = geo.networks["body"]
+    x_le = geo.intersections["wing/body upper"][0, 0]
+    assert body.ndim == 3 and body.shape[1] >= 10
+    # Lower intersection re-interpolated at the upper points' x (TM-4406 fig 4).
+    fl = geo.fillets["fillet lower"]
+    np.testing.assert_allclose(fl[:, 0, 0], geo.fillets["fillet upper"][:, 0, 0])
+    assert body[:, 0, 0].min() < x_le < body[:, 0, 0].max()
+
+
+def test_bad_options_are_clear():
+    cfg = example()
+    with pytest.raises(jc.GeometryError, match="unknown option"):
+        jc.complete(cfg, "cubic", theta=3)
+    with pytest.raises(jc.GeometryError, match="fillet must be None, 'cubic' or 'circular'"):
+        jc.complete(cfg, "round")
+    with pytest.raises(jc.GeometryError, match="blocks must be 4 or 6"):
+        jc.complete(cfg, blocks=5)
+    with pytest.raises(jc.GeometryError, match="needs a fuselage named 'hull'"):
+        jc.complete(cfg, body="hull")
+
+
+def test_complete_geometry_writes_to_every_format(tmp_path):
+    geo = jc.complete(wing_body(), "cubic", keep_area=True)
+    for ext in ("wgs", "p3d", "hess", "stl", "vtk"):
+        jc.write(geo, tmp_path / f"out.{ext}")
+    back = jc.read(tmp_path / "out.wgs")
+    assert set(back.networks) == set(geo.networks)
