@@ -127,6 +127,62 @@ def _cmd_demo(args):
     return 0
 
 
+def _summary(geo, cfg, args):
+    import json
+
+    st = {k: [float(v) for v in arr] for k, arr in geo.stations.items()}
+    return json.dumps({
+        "title": cfg.title, "fillet": args.fillet, "keep_area": args.keep_area,
+        "networks": {k: list(v.shape) for k, v in geo.networks.items()},
+        "intersections": {k: v.tolist() for k, v in geo.intersections.items()},
+        "stations": st, "log": list(geo.log)}, indent=1)
+
+
+def _cmd_complete(args):
+    from . import plots, plots_juncture
+    from .complete import complete
+    from .io import atomic_output, write
+
+    cfg, warns = _read_with_warnings(args.deck)
+    for w in warns:
+        print(f"warning: {w}", file=sys.stderr)
+    fillet = None if args.fillet == "none" else args.fillet
+    opts = {k: v for k, v in (("theta_u_deg", args.theta_u), ("end", args.end),
+                              ("end_value", args.end_value), ("blend_length", args.blend_length),
+                              ("fillet_radius", args.radius), ("remedy", args.remedy),
+                              ("blocks", args.blocks), ("single_network", args.single_network))
+            if v is not None}
+    geo = complete(cfg, fillet, args.keep_area, **opts)
+    out = Path(args.output)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for fmt in args.format:
+        name = f"geometry.{fmt}"
+        write(geo, out / name)
+        written.append(name)
+    with atomic_output(out / "summary.json") as fh:
+        fh.write(_summary(geo, cfg, args))
+    written.append("summary.json")
+    figs = [("views.png", plots.plot_views(geo)),
+            ("intersection.png", plots_juncture.plot_gap_and_intersection(cfg, geo)),
+            ("lower_intersection.png", plots_juncture.plot_lower_intersection(cfg, geo))]
+    if fillet is not None:
+        figs += [("fillet_sections.png", plots_juncture.plot_fillet_sections(cfg, geo)),
+                 ("areas.png", plots_juncture.plot_station_areas(geo))]
+    for name, fig in figs:
+        plots.save(fig, out / name)
+        written.append(name)
+    st = geo.stations
+    print(f"{cfg.title}: {len(geo.networks)} networks; fillet {fillet}; "
+          f"{len(st['x'])} stations")
+    if fillet is not None:
+        print(f"  added area up to {st['area_fillet'].max():.4g}; radius reduced by up to "
+              f"{(st['radius_original'] - st['radius_new']).max():.4g}; worst area residual "
+              f"{st['residual'].max():.3g}")
+    print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
+    return 0
+
+
 def _cmd_massprops(args):
     from .massprops.command import run_massprops
 
@@ -155,6 +211,31 @@ def _build_parser():
     s.add_argument("--to", dest="output_format", choices=writer_formats(),
                    help="output format (default: by extension)")
     s.set_defaults(func=_cmd_convert)
+
+    s = sub.add_parser("complete", help="intersect, fillet and re-design the wing-body juncture")
+    s.add_argument("deck")
+    s.add_argument("-o", "--output", default="juncture-output", help="output directory")
+    s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none")
+    s.add_argument("--keep-area", action="store_true",
+                   help="shrink the fuselage so body + fillet keeps the original area")
+    s.add_argument("--format", nargs="+", default=["wgs"], metavar="EXT",
+                   help="output formats by extension (default: wgs), e.g. wgs p3d hess stl vtk")
+    s.add_argument("--blocks", type=int, choices=(4, 6), help="output blocks (default 4)")
+    s.add_argument("--single-network", action="store_true", default=None,
+                   help="fuselage as one network (TM-4406 figs 4-5)")
+    s.add_argument("--theta-u", type=float, metavar="DEG",
+                   help="cubic fillet start above/below the intersection [deg] (default 20)")
+    s.add_argument("--end", choices=("dy", "intersection", "section"),
+                   help="cubic fillet end point: span increment from the intersection (default),"
+                   " fraction of the way from it to section 2, or from section 1 to 2")
+    s.add_argument("--end-value", type=float,
+                   help="span increment (default: a quarter of the largest body radius) or "
+                   "fraction (default 0.5)")
+    s.add_argument("--blend-length", type=float, help="LE/TE blending length l_b")
+    s.add_argument("--radius", type=float, help="circular fillet radius rho")
+    s.add_argument("--remedy", choices=("z-constraint", "parabolas"),
+                   help="low-wing dip remedy for the cubic fillet")
+    s.set_defaults(func=_cmd_complete)
 
     s = sub.add_parser("massprops", help="mass, CG and inertia of a spec or of every deck "
                        "component")

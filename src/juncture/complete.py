@@ -38,11 +38,14 @@ class CompleteOptions:
     ----------
     theta_u_deg : float
         Cubic fillet: angular distance of the start point above/below the intersection [deg].
-    end : {"intersection", "section", "dy"}
-        Cubic fillet end-point option (TM-4406): fraction of the intersection -> section 2
-        distance, fraction of the section 1 -> 2 distance, or a span increment.
-    end_value : float
-        Its value (a fraction, or a length for "dy").
+    end : {"dy", "intersection", "section"}
+        Cubic fillet end-point option (TM-4406): a span increment from the intersection,
+        a fraction of the intersection -> section 2 distance, or a fraction of the section
+        1 -> 2 distance.
+    end_value : float or None
+        Its value (a length for "dy", else a fraction). None: a quarter of the body's largest
+        radius for "dy" (a fraction of the distance to section 2 is a poor default for a wing
+        given by two sections, root and tip), 0.5 otherwise.
     blend_length : float or None
         LE/TE blending length l_b [deck length]; None: a tenth of the wing root's x extent.
     blending : {"scale", "points"}
@@ -65,8 +68,8 @@ class CompleteOptions:
     """
 
     theta_u_deg: float = 20.0
-    end: str = "intersection"
-    end_value: float = 0.5
+    end: str = "dy"
+    end_value: float | None = None
     blend_length: float | None = None
     blending: str = "scale"
     remedy: str | None = None
@@ -125,7 +128,10 @@ def _fillet_maker(wing, fillet, opts, body0):
         if fillet is None:
             return iu, il, sharp_fillet(iu), _sharp_with_misses(body, il, iu)
         if fillet == "cubic":
-            kw = dict(theta_u=theta_u, end=opts.end, end_value=opts.end_value,
+            end_value = opts.end_value
+            if end_value is None:
+                end_value = 0.25 * float(body0.radius.max()) if opts.end == "dy" else 0.5
+            kw = dict(theta_u=theta_u, end=opts.end, end_value=end_value,
                       blend_length=opts.blend_length, n_points=opts.n_fillet_points,
                       remedy=opts.remedy, blending=opts.blending)
             return (iu, il, cubic_fillet(wing, body, iu, **kw),

@@ -93,3 +93,34 @@ def test_extents_printed_match_the_model(capsys):
     out = capsys.readouterr().out
     ext = jc.read(PDAS_DECK).extents()
     assert f"{ext[1, 0]:10.4g}" in out and np.isclose(ext[1, 0], 300.0)
+
+
+def test_complete_writes_networks_summary_and_figures(tmp_path, capsys):
+    import json
+
+    out = tmp_path / "run"
+    assert main(["complete", str(EXAMPLE_DECK), "-o", str(out), "--fillet", "cubic",
+                 "--keep-area", "--format", "wgs", "p3d", "stl", "--blocks", "6"]) == 0
+    for name in ("geometry.wgs", "geometry.p3d", "geometry.stl", "summary.json", "views.png",
+                 "intersection.png", "lower_intersection.png", "fillet_sections.png",
+                 "areas.png"):
+        assert (out / name).stat().st_size > 0, name
+    summary = json.loads((out / "summary.json").read_text())
+    st = summary["stations"]
+    total = np.pi * np.array(st["radius_new"]) ** 2 + np.array(st["area_fillet"])
+    np.testing.assert_allclose(total, st["area_original"], rtol=1e-8)
+    assert "wing upper" in summary["networks"]
+    assert "worst area residual" in capsys.readouterr().out
+
+
+def test_complete_on_the_pdas_deck_without_fillet(tmp_path):
+    assert main(["complete", str(PDAS_DECK), "-o", str(tmp_path)]) == 0
+    geo = jc.read(tmp_path / "geometry.wgs")
+    assert {"body forward", "wing-body upper", "wing-body lower", "body aft"} <= set(
+        geo.networks)
+
+
+def test_complete_reports_an_impossible_fillet_as_exit_2(tmp_path, capsys):
+    assert main(["complete", str(PDAS_DECK), "-o", str(tmp_path), "--fillet", "cubic",
+                 "--keep-area", "--end", "intersection", "--end-value", "0.9"]) == 2
+    assert "adds more area" in capsys.readouterr().err
