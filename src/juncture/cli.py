@@ -183,6 +183,20 @@ def _cmd_complete(args):
     return 0
 
 
+def _cmd_blend(args):
+    from .blend import run
+
+    result = run(args.spec, args.output)
+    for seam in result["report"]["seams"]:
+        print(f"  {seam['seam']:<12} max gap {seam['max_gap']:.3g}  max normal angle "
+              f"{seam['max_angle_deg']:.3g} deg  ({seam['samples']} samples)")
+    for name in result["files"]:
+        print(f"wrote {name}")
+    for fmt, reason in dict(result.get("skipped") or {}).items():
+        print(f"skipped {fmt}: {reason}", file=sys.stderr)
+    return 0
+
+
 def _cmd_massprops(args):
     from .massprops.command import run_massprops
 
@@ -236,6 +250,11 @@ def _build_parser():
     s.add_argument("--remedy", choices=("z-constraint", "parabolas"),
                    help="low-wing dip remedy for the cubic fillet")
     s.set_defaults(func=_cmd_complete)
+
+    s = sub.add_parser("blend", help="G1 long-strake wing-body blend (Song, Ma & Wang 2008)")
+    s.add_argument("spec", help="blend spec (JSON), e.g. examples/missile_blend.json")
+    s.add_argument("-o", "--output", required=True, help="output directory")
+    s.set_defaults(func=_cmd_blend)
 
     s = sub.add_parser("massprops", help="mass, CG and inertia of a spec or of every deck "
                        "component")

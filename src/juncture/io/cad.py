@@ -1,0 +1,231 @@
+"""STEP and IGES output through OpenCASCADE (the optional ``cad`` extra, ``import OCP``).
+
+Formats (see ``formats.md``): STEP (ISO 10303-21, AP214 via ``STEPControl_Writer``) and IGES
+5.3 (``IGESControl_Writer``). Every network of a Geometry becomes one B-spline face,
+approximated through its points by ``GeomAPI_PointsToBSplineSurface`` (degree 3-8, C2, a
+tolerance of 1e-7 times the network's size); the faces go into one compound. Exact B-spline
+patches (:class:`juncture.blend.bspline.BSplineSurface`) are written as they are by
+:func:`write_bspline_surfaces`.
+
+This is the ONE module that touches OCP. It works on OCP 7.9 and 8.0, which renamed the
+collection classes (``TColgp_Array2OfPnt`` -> ``OCP.collections.Array2_gp_Pnt``,
+``TColStd_Array1OfReal`` -> ``Array1_double``, ``TColStd_Array1OfInteger`` -> ``Array1_int``)
+and the downcasts (``TopoDS.Edge_s`` -> ``TopoDS.Edge``): names are found by feature
+detection. OCP is imported inside the functions (the import takes about a second); without it
+the writers raise :class:`~juncture.errors.MissingDependencyError`. IGES faces are added with
+``AddShape`` (``AddGeom`` on a bare surface wrote an empty file, dependencies.md).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..errors import GeometryError, JunctureError, MissingDependencyError
+from ._registry import atomic_output, register_format, to_geometry
+
+__all__ = ["write_step", "write_iges", "write_bspline_surfaces", "ocp_api"]
+
+_INSTALL = "pip install juncture[cad]"
+
+
+def _first(module, *names):
+    for name in names:
+        obj = getattr(module, name, None)
+        if obj is not None:
+            return obj
+    return None
+
+
+def ocp_api():
+    """The OCP classes juncture uses, resolved for the installed OCP version.
+
+    Returns
+    -------
+    types.SimpleNamespace
+        ``Array2Pnt``, ``Array1Real``, ``Array1Int``, ``gp_Pnt``, ``PointsToBSplineSurface``,
+        ``BSplineSurface``, ``MakeFace``, ``Compound``, ``Builder``, ``StepWriter``,
+        ``StepAsIs``, ``IgesWriter``, ``C2``, ``downcast_face``.
+
+    Raises
+    ------
+    MissingDependencyError
+        If OCP is not installed.
+    """
+    try:
+        import OCP  # noqa: F401
+    except ImportError:
+        raise MissingDependencyError(f"STEP/IGES output needs OpenCASCADE (OCP): "
+                                     f"{_INSTALL}") from None
+    from OCP.BRep import BRep_Builder
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace
+    from OCP.Geom import Geom_BSplineSurface
+    from OCP.GeomAbs import GeomAbs_Shape
+    from OCP.GeomAPI import GeomAPI_PointsToBSplineSurface
+    from OCP.gp import gp_Pnt
+    from OCP.IGESControl import IGESControl_Writer
+    from OCP.STEPControl import STEPControl_StepModelType, STEPControl_Writer
+    from OCP.TopoDS import TopoDS, TopoDS_Compound
+
+    try:  # OCP 8.0
+        from OCP import collections as coll
+
+        arr2, arr1r, arr1i = coll.Array2_gp_Pnt, coll.Array1_double, coll.Array1_int
+    except (ImportError, AttributeError):  # OCP 7.9
+        from OCP.TColgp import TColgp_Array2OfPnt as arr2
+        from OCP.TColStd import TColStd_Array1OfInteger as arr1i
+        from OCP.TColStd import TColStd_Array1OfReal as arr1r
+    _quiet_messages()
+    return SimpleNamespace(
+        Array2Pnt=arr2, Array1Real=arr1r, Array1Int=arr1i, gp_Pnt=gp_Pnt,
+        PointsToBSplineSurface=GeomAPI_PointsToBSplineSurface,
+        BSplineSurface=Geom_BSplineSurface, MakeFace=BRepBuilderAPI_MakeFace,
+        Compound=TopoDS_Compound, Builder=BRep_Builder, StepWriter=STEPControl_Writer,
+        StepAsIs=STEPControl_StepModelType.STEPControl_AsIs, IgesWriter=IGESControl_Writer,
+        C2=GeomAbs_Shape.GeomAbs_C2, downcast_face=_first(TopoDS, "Face", "Face_s"))
+
+
+def _quiet_messages():
+    """Keep OCP's transfer statistics off stdout (only failures are printed)."""
+    try:
+        from OCP.Message import Message, Message_Gravity
+
+        for printer in Message.DefaultMessenger_s().Printers():
+            printer.SetTraceLevel(Message_Gravity.Message_Fail)
+    except (ImportError, AttributeError, TypeError):  # older bindings: leave as is
+        pass
+
+
+def _array2(api, pts):
+    n, m = pts.shape[:2]
+    arr = api.Array2Pnt(1, n, 1, m)
+    for i in range(n):
+        for j in range(m):
+            arr.SetValue(i + 1, j + 1, api.gp_Pnt(*(float(c) for c in pts[i, j])))
+    return arr
+
+
+def _array1(cls, values):
+    arr = cls(1, len(values))
+    for i, v in enumerate(values):
+        arr.SetValue(i + 1, v)
+    return arr
+
+
+def _network_face(api, name, net):
+    net = np.asarray(net, float)
+    if net.ndim != 3 or net.shape[0] < 2 or net.shape[1] < 2 or net.shape[2] != 3:
+        raise GeometryError(f"a network needs at least 2 x 2 points, found {net.shape}",
+                            component=name)
+    size = float(np.max(np.ptp(net.reshape(-1, 3), axis=0))) or 1.0
+    fit = api.PointsToBSplineSurface(_array2(api, net), 3, 8, api.C2, 1e-7 * size)
+    if not fit.IsDone():
+        raise GeometryError("OpenCASCADE could not fit a B-spline surface through the "
+                            "points", component=name)
+    return api.MakeFace(fit.Surface(), 1e-9 * size).Face()
+
+
+def _bspline_face(api, surf):
+    ku, kv = np.asarray(surf.knots_u, float), np.asarray(surf.knots_v, float)
+    uk, um = np.unique(ku, return_counts=True)
+    vk, vm = np.unique(kv, return_counts=True)
+    geom = api.BSplineSurface(_array2(api, np.asarray(surf.control)),
+                              _array1(api.Array1Real, [float(x) for x in uk]),
+                              _array1(api.Array1Real, [float(x) for x in vk]),
+                              _array1(api.Array1Int, [int(x) for x in um]),
+                              _array1(api.Array1Int, [int(x) for x in vm]),
+                              int(surf.degree_u), int(surf.degree_v))
+    return api.MakeFace(geom, 1e-9).Face()
+
+
+def _write_faces(api, faces, path, kind):
+    """Write faces as STEP or IGES to ``path`` atomically."""
+    path = Path(path)
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp_file = os.path.join(tmp, "out.step" if kind == "step" else "out.igs")
+        if kind == "step":
+            comp = api.Compound()
+            builder = api.Builder()
+            builder.MakeCompound(comp)
+            for face in faces:
+                builder.Add(comp, face)
+            writer = api.StepWriter()
+            writer.Transfer(comp, api.StepAsIs)
+            status = writer.Write(tmp_file)
+            ok = int(status) == 1
+        else:
+            writer = api.IgesWriter()
+            for face in faces:
+                writer.AddShape(face)
+            writer.ComputeModel()
+            ok = bool(writer.Write(tmp_file))
+        if not ok or not os.path.exists(tmp_file):
+            raise JunctureError(f"OpenCASCADE failed to write {kind.upper()} file "
+                                f"{str(path)!r}")
+        data = Path(tmp_file).read_bytes()
+    with atomic_output(path, "wb") as fh:
+        fh.write(data)
+    return path
+
+
+def _write_geometry(obj, path, kind):
+    api = ocp_api()
+    geometry = to_geometry(obj)
+    if not geometry.networks:
+        raise GeometryError(f"nothing to write to {kind.upper()}: the geometry has no "
+                            "networks")
+    faces = [_network_face(api, name, net) for name, net in geometry.networks.items()]
+    return _write_faces(api, faces, path, kind)
+
+
+def write_step(obj, path, **kwargs):
+    """Write every network of ``obj`` (Geometry or dict of networks) as a STEP B-spline face.
+
+    Raises
+    ------
+    MissingDependencyError
+        Without OCP (``pip install juncture[cad]``).
+    GeometryError
+        If a network cannot be fitted.
+    """
+    return _write_geometry(obj, path, "step")
+
+
+def write_iges(obj, path, **kwargs):
+    """Write every network of ``obj`` as an IGES B-spline face (see :func:`write_step`)."""
+    return _write_geometry(obj, path, "iges")
+
+
+def write_bspline_surfaces(surfaces, path):
+    """Write exact B-spline surfaces as faces: STEP for .step/.stp, IGES for .igs/.iges.
+
+    Parameters
+    ----------
+    surfaces : iterable of BSplineSurface
+        Objects with ``control`` (n_u, n_v, 3), ``knots_u``, ``knots_v``, ``degree_u``,
+        ``degree_v`` (clamped, non-rational).
+    path : str or path-like
+
+    Raises
+    ------
+    JunctureError
+        For an unknown extension; MissingDependencyError without OCP.
+    """
+    suffix = Path(path).suffix.lower()
+    kinds = {".step": "step", ".stp": "step", ".igs": "iges", ".iges": "iges"}
+    if suffix not in kinds:
+        raise JunctureError(f"cannot tell STEP or IGES from the extension {suffix!r} of "
+                            f"{str(path)!r}; use .step, .stp, .igs or .iges")
+    api = ocp_api()
+    faces = [_bspline_face(api, s) for s in surfaces]
+    if not faces:
+        raise GeometryError("no surfaces to write")
+    return _write_faces(api, faces, path, kinds[suffix])
+
+
+register_format("step", (".step", ".stp"), writer=write_step)
+register_format("iges", (".igs", ".iges"), writer=write_iges)
