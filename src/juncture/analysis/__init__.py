@@ -1,5 +1,8 @@
 """Analysis of complete geometry: plane cuts (area distributions) and supersonic wave drag."""
 
+from .areas import mach_plane_area_distribution, normal_area_distribution
+from .closed import closed_networks
+from .command import plot_area_distribution, wavedrag
 from .cuts import mach_plane_areas, mach_plane_extents, normal_areas, plane_cut_areas
 from .wavedrag import (
     FarFieldResult,
@@ -13,6 +16,11 @@ from .wavedrag import (
 )
 
 __all__ = [
+    "normal_area_distribution",
+    "mach_plane_area_distribution",
+    "closed_networks",
+    "wavedrag",
+    "plot_area_distribution",
     "plane_cut_areas",
     "normal_areas",
     "mach_plane_areas",

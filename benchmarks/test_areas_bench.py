@@ -1,0 +1,30 @@
+"""Benchmark: Mach-plane area distributions of the bundled transport, 100 cuts x 16 roll angles.
+
+Closing and resampling the model (closed_networks: ~110,000 triangles, wing roots trimmed at
+the bodies) plus the cuts. Run with ``make bench``. Target: under 1 s.
+"""
+
+import numpy as np
+import pytest
+
+import juncture as jc
+from juncture.analysis.areas import mach_plane_area_distribution, normal_area_distribution
+from support import EXAMPLE_DECK
+
+
+def test_mach_plane_areas_transport_100_x_16(benchmark):
+    cfg = jc.read(EXAMPLE_DECK)
+    s = benchmark(mach_plane_area_distribution, cfg, 2.0, 100, 16)
+    assert s["area"].shape == (16, 100) and s["x"].shape == (16, 100)
+    assert s["area"].max() > 100.0
+    k = (8 - np.arange(16)) % 16
+    assert s["area"][k] == pytest.approx(s["area"], abs=1e-5 * s["area"].max())
+    stats = getattr(benchmark, "stats", None)
+    if stats is not None and stats.stats.rounds:
+        assert stats.stats.min < 1.0
+
+
+def test_normal_areas_transport_101(benchmark):
+    cfg = jc.read(EXAMPLE_DECK)
+    a = benchmark(normal_area_distribution, cfg, None, None, 101)
+    assert a["total"].shape == (101,)
