@@ -84,15 +84,16 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         ln, nn, bb = lines[live], n[live], beta[live]
         k = len(ln)
 
-        def error(points):
+        def error(points, rows):
             x = points[..., 0]
-            shape = (k,) + (1,) * (points.ndim - 2)
-            rho = bb.reshape(shape) * rho_of(x)
-            c = points + rho[..., None] * nn.reshape(shape + (3,))
+            shape = (len(rows),) + (1,) * (points.ndim - 2)
+            rho = bb[rows].reshape(shape) * rho_of(x)
+            c = points + rho[..., None] * nn[rows].reshape(shape + (3,))
             ctr = body.center_at(x)
             d = np.hypot(c[..., 1] - ctr[..., 0], c[..., 2] - ctr[..., 1])
             return d - (body.radius_at(x) + rho)
 
+        error.row_aware = True
         u_low = np.minimum(inter.u[live] - 1.0, -1.0)
         cr = find_crossings(ln, error, u_low)
         log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "

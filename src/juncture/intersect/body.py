@@ -89,7 +89,7 @@ def _u_axis(wing, body, lines):
     return (c - s[0]) / (s[1] - s[0])
 
 
-def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24):
+def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24, hint=None):
     """Intersection line of one surface of ``wing`` with ``body`` (TM-4406 eqs 4-6).
 
     Parameters
@@ -98,6 +98,10 @@ def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24):
     body : CircularBody or ArbitraryBody
     side : {"upper", "lower"}
         For fins and pylons "upper" is the outboard side.
+    samples_per_section : int
+        Bracketing density where a crossing may hide (see :func:`.rays.find_crossings`).
+    hint : (n_stations,) float, optional
+        Section coordinates of a previous solve on a body that contained this one.
 
     Returns
     -------
@@ -116,7 +120,8 @@ def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24):
         raise GeometryError(f"the tip of {side} lofting line {j + 1} lies inside {body.name}: "
                             "the surface never leaves the body", wing.name, wing.n_sections)
     u_low = np.minimum(_u_axis(wing, body, lines), 0.0)
-    cr = find_crossings(lines, error, u_low, samples_per_section)
+    cr = find_crossings(lines, error, u_low, samples_per_section,
+                        lipschitz=body.error_lipschitz, hint=hint)
     pts = cr.points
     theta = np.full(len(pts), np.nan)
     if cr.found.any():

@@ -73,49 +73,9 @@ class Crossings:
     residual: np.ndarray
 
 
-def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_iter=200):
-    """Where each extended lofting line first meets a surface, coming inboard from the tip.
-
-    Parameters
-    ----------
-    lines : (m, n, 3) float
-        Lofting lines, root first.
-    error : callable
-        ``error(points (..., 3)) -> (...)``: negative inside the other surface, positive
-        outside, zero on it (TM-4406 eq 6 for a circular body).
-    u_low : (m,) float or float
-        How far inboard to search (section coordinate, usually < 0: beyond the root).
-    samples_per_section : int
-        Bracketing grid density; a crossing pair closer than 1/samples of a section apart can
-        be missed (both are then reported as no crossing), never mis-solved.
-    rtol : float
-        Relative tolerance on u (times max(1, |u|)).
-
-    Returns
-    -------
-    Crossings
-    """
-    lines = np.asarray(lines, float)
-    m, n = lines.shape[:2]
-    u_low = np.broadcast_to(np.asarray(u_low, float), (m,))
-    u_top = float(n - 1)
-    span = u_top - np.minimum(u_low, 0.0)
-    n_samp = int(np.ceil(float(span.max()) * samples_per_section)) + 2
-    grid = u_top - np.linspace(0.0, 1.0, n_samp)[None, :] * (u_top - u_low)[:, None]  # tip -> in
-    e = error(polyline_points(lines, grid))  # (m, n_samp)
-    inside = e <= 0.0
-    change = inside[:, 1:] != inside[:, :-1]
-    n_cross = change.sum(axis=1)
-    # First sample reached coming inboard that is inside, preceded by an outside one.
-    entering = ~inside[:, :-1] & inside[:, 1:]
-    found = entering.any(axis=1)
-    i = np.argmax(entering, axis=1)
-    rows = np.arange(m)
-    a = grid[rows, i]          # outside (e > 0)
-    b = grid[rows, i + 1]      # inside (e <= 0)
-    fa = e[rows, i]
-    fb = e[rows, i + 1]
-    act = found.copy()
+def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
+    """Close brackets [a (outside, f > 0), b (inside, f <= 0)] by Illinois regula falsi."""
+    m = len(a)
     side = np.zeros(m, int)
     it = 0
     while act.any():
@@ -127,8 +87,9 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
             c = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
         bad = ~np.isfinite(c) | ((c - a) * (c - b) > 0)
         c = np.where(bad, 0.5 * (a + b), c)
-        fc = np.where(act, error(polyline_points(lines, np.where(act, c, b)[:, None]))[:, 0],
-                      0.0)
+        fc = np.zeros(m)
+        rows = np.flatnonzero(act)
+        fc[rows] = _call(error, polyline_points(lines[rows], c[rows, None]), rows)[:, 0]
         left = fc > 0.0  # c is outside: replaces a
         # Illinois: halve the retained end's value when the same end is kept twice.
         fa_new = np.where(left, fc, np.where(side == -1, fa * 0.5, fa))
@@ -141,13 +102,218 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
         exact = act & (fc == 0.0)
         a = np.where(exact, c, a)
         b = np.where(exact, c, b)
-        act &= np.abs(b - a) > rtol * np.maximum(1.0, np.abs(c))
+        act = act & (np.abs(b - a) > rtol * np.maximum(1.0, np.abs(c)))
+    return a, b, fa, fb, it
+
+
+def _brackets_dense(lines, error, u_low, samples_per_section, rows):
+    m, n = lines.shape[:2]
+    u_top = float(n - 1)
+    span = u_top - np.minimum(u_low, 0.0)
+    n_samp = int(np.ceil(float(span.max()) * samples_per_section)) + 2
+    grid = u_top - np.linspace(0.0, 1.0, n_samp)[None, :] * (u_top - u_low)[:, None]
+    e = _call(error, polyline_points(lines, grid), rows)
+    return _first_entering(grid, e)
+
+
+def _first_entering(grid, e):
+    """Per row of a grid running from the tip inboard: the first outside -> inside pair."""
+    inside = e <= 0.0
+    n_cross = (inside[:, 1:] != inside[:, :-1]).sum(axis=1)
+    entering = ~inside[:, :-1] & inside[:, 1:]
+    found = entering.any(axis=1)
+    i = np.argmax(entering, axis=1)
+    rows = np.arange(len(grid))
+    return (found, grid[rows, i], grid[rows, i + 1], e[rows, i], e[rows, i + 1], n_cross)
+
+
+def _refine_dips(lines, error, line_rows, ua, ub, ea, eb, speed, lipschitz, max_rounds=48):
+    """Find a point inside the surface between two outside samples, where one may hide.
+
+    Intervals [ua, ub] of one lofting-line segment (ua on the tip side) with both ends
+    outside are bisected while e_a + e_b <= K * length (otherwise no point of the interval can
+    be inside: the error changes by at most K per unit length). Returns, per interval,
+    whether an inside point was found and where (the tip-most one found).
+    """
+    n = len(ua)
+    found = np.zeros(n, bool)
+    u_in = np.zeros(n)
+    e_in = np.zeros(n)
+    idx = np.arange(n)
+    a, b, fa, fb, sp = ua.copy(), ub.copy(), ea.copy(), eb.copy(), speed.copy()
+    for _ in range(max_rounds):
+        keep = (fa + fb <= lipschitz * np.abs(b - a) * sp) & ~found[idx]
+        if not keep.any():
+            break
+        idx, a, b, fa, fb, sp = idx[keep], a[keep], b[keep], fa[keep], fb[keep], sp[keep]
+        mid = 0.5 * (a + b)
+        rows = line_rows[idx]
+        fm = _call(error, polyline_points(lines[idx], mid[:, None]), rows)[:, 0]
+        neg = fm <= 0
+        # Tip-most (largest u) inside point per interval.
+        order = np.argsort(-mid[neg], kind="stable")
+        hit_idx, hit_mid, hit_f = idx[neg][order], mid[neg][order], fm[neg][order]
+        first = np.unique(hit_idx, return_index=True)[1]
+        found[hit_idx[first]] = True
+        u_in[hit_idx[first]] = hit_mid[first]
+        e_in[hit_idx[first]] = hit_f[first]
+        # Split the rest: [a, mid] (tip side) and [mid, b].
+        rest = ~neg
+        idx = np.concatenate([idx[rest], idx[rest]])
+        a, b = np.concatenate([a[rest], mid[rest]]), np.concatenate([mid[rest], b[rest]])
+        fa, fb = np.concatenate([fa[rest], fm[rest]]), np.concatenate([fm[rest], fb[rest]])
+        sp = np.concatenate([sp[rest], sp[rest]])
+    return found, u_in, e_in
+
+
+def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line_rows):
+    """Brackets from the section points plus dense samples only where a crossing may hide.
+
+    The error changes by at most ``lipschitz`` per unit length along a line, so a segment of
+    length l whose end errors are both positive with e_a + e_b > lipschitz * l cannot reach
+    zero: it is skipped. The others are sampled densely, and any pair of outside samples that
+    could still hide an inside point between them is bisected until it is proved outside or an
+    inside point is found (a grazing double crossing is never missed).
+    """
+    m, n = lines.shape[:2]
+    knots = np.concatenate([u_low[:, None], np.arange(n, dtype=float)[None, :].repeat(m, 0)],
+                           axis=1)[:, ::-1]  # tip first, (m, n + 1)
+    pts = polyline_points(lines, knots)
+    e = _call(error, pts, line_rows)
+    seg_len = np.linalg.norm(np.diff(pts, axis=1), axis=-1)  # (m, n)
+    maybe = (e[:, :-1] <= 0) | (e[:, 1:] <= 0) | (e[:, :-1] + e[:, 1:] <= lipschitz * seg_len)
+    rows, segs = np.nonzero(maybe)
+    found = np.zeros(m, bool)
+    a = np.zeros(m)
+    b = np.zeros(m)
+    fa = np.zeros(m)
+    fb = np.zeros(m)
+    n_cross = np.zeros(m, int)
+    if rows.size == 0:
+        return found, a, b, fa, fb, n_cross
+    u0, u1 = knots[rows, segs], knots[rows, segs + 1]
+    # As dense as the full scan: samples_per_section per unit of u on the longest candidate
+    # (the inboard extension can span several sections).
+    k = int(np.ceil(np.abs(u1 - u0).max() * samples_per_section)) + 1
+    t = np.linspace(0.0, 1.0, max(k, 2))[None, :]
+    grid = u0[:, None] + t * (u1 - u0)[:, None]  # (pairs, k), tip side first
+    eg = _call(error, polyline_points(lines[rows], grid), line_rows[rows])
+    # Pairs of outside samples that may hide an inside point: bisect them.
+    du = np.abs(u1 - u0)
+    speed = np.where(du > 0, seg_len[rows, segs] / np.where(du > 0, du, 1.0), 0.0)
+    suspect = (eg[:, :-1] > 0) & (eg[:, 1:] > 0) & (
+        eg[:, :-1] + eg[:, 1:] <= lipschitz * speed[:, None] * np.abs(np.diff(grid, axis=1)))
+    pi, si = np.nonzero(suspect)
+    if pi.size:
+        ok, u_in, e_in = _refine_dips(lines[rows][pi], error, line_rows[rows][pi],
+                                      grid[pi, si], grid[pi, si + 1], eg[pi, si],
+                                      eg[pi, si + 1], speed[pi], lipschitz)
+        if ok.any():
+            # Insert each inside point as an extra sample between its pair: widen the grid by
+            # one column and place it in sorted (tip-first) position.
+            extra_u = np.full(len(grid), np.nan)
+            extra_e = np.full(len(grid), np.nan)
+            pos = np.full(len(grid), -1)
+            sel = np.flatnonzero(ok)
+            # Keep the tip-most dip of each pair-row.
+            first = np.unique(pi[sel], return_index=True)[1]
+            pr, ps = pi[sel][first], si[sel][first]
+            extra_u[pr], extra_e[pr], pos[pr] = u_in[sel][first], e_in[sel][first], ps
+            cols = np.arange(grid.shape[1] + 1)[None, :]
+            src = np.where((pos[:, None] >= 0) & (cols > pos[:, None] + 1), cols - 1, cols)
+            src = np.minimum(src, grid.shape[1] - 1)
+            g2 = np.take_along_axis(grid, src, 1)
+            e2 = np.take_along_axis(eg, src, 1)
+            ins = (pos[:, None] >= 0) & (cols == pos[:, None] + 1)
+            g2 = np.where(ins, extra_u[:, None], g2)
+            e2 = np.where(ins, extra_e[:, None], e2)
+            # Rows without a dip got their last column duplicated: harmless (no sign change).
+            grid, eg = g2, e2
+    f_, a_, b_, fa_, fb_, nc_ = _first_entering(grid, eg)
+    np.add.at(n_cross, rows, nc_)
+    # Pairs come sorted by row then by segment from the tip: the first pair with a crossing in
+    # each row is the first crossing reached coming inboard.
+    hit = np.flatnonzero(f_)
+    first_rows, first = np.unique(rows[hit], return_index=True)
+    pick = hit[first]
+    found[first_rows] = True
+    a[first_rows], b[first_rows] = a_[pick], b_[pick]
+    fa[first_rows], fb[first_rows] = fa_[pick], fb_[pick]
+    return found, a, b, fa, fb, n_cross
+
+
+def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_iter=200,
+                   lipschitz=None, hint=None, hint_width=0.05):
+    """Where each extended lofting line first meets a surface, coming inboard from the tip.
+
+    Parameters
+    ----------
+    lines : (m, n, 3) float
+        Lofting lines, root first.
+    error : callable
+        ``error(points (..., 3)) -> (...)``: negative inside the other surface, positive
+        outside, zero on it (TM-4406 eq 6 for a circular body). If the function has an
+        attribute ``row_aware = True`` it is called as ``error(points (k, j, 3), rows (k,))``
+        with the line index of each row of points.
+    u_low : (m,) float or float
+        How far inboard to search (section coordinate, usually < 0: beyond the root).
+    samples_per_section : int
+        Bracketing density in a segment that may hold a crossing; two crossings closer than
+        1/samples of a section are seen as none (never mis-solved).
+    rtol : float
+        Relative tolerance on u (times max(1, |u|)).
+    lipschitz : float, optional
+        A bound on |d error / d length| along a line. Given, only segments that may hold a
+        crossing are sampled densely (exact screening, much faster); otherwise every segment.
+    hint : (m,) float, optional
+        Previous crossings (e.g. of the same wing on a slightly changed body). Where
+        [hint - w, hint + w] brackets a crossing with the outboard end outside, it is used
+        directly; the caller guarantees nothing changed outboard of it.
+
+    Returns
+    -------
+    Crossings
+    """
+    lines = np.asarray(lines, float)
+    m = lines.shape[0]
+    u_low = np.broadcast_to(np.asarray(u_low, float), (m,)).copy()
+    todo = np.ones(m, bool)
+    found = np.zeros(m, bool)
+    a, b, fa, fb = (np.zeros(m) for _ in range(4))
+    n_cross = np.zeros(m, int)
+    if hint is not None:
+        h = np.asarray(hint, float)
+        ok_h = np.isfinite(h)
+        hb = np.stack([np.where(ok_h, h + hint_width, 0.0), np.where(ok_h, h - hint_width, 0.0)],
+                      axis=1)
+        eh = _call(error, polyline_points(lines, hb), np.arange(m))
+        good = ok_h & (eh[:, 0] > 0) & (eh[:, 1] <= 0)
+        found[good], a[good], b[good] = True, hb[good, 0], hb[good, 1]
+        fa[good], fb[good] = eh[good, 0], eh[good, 1]
+        n_cross[good] = 1
+        todo = ~good
+    if todo.any():
+        r = np.flatnonzero(todo)
+        if lipschitz is None:
+            res = _brackets_dense(lines[r], error, u_low[r], samples_per_section, r)
+        else:
+            res = _brackets_screened(lines[r], error, u_low[r], lipschitz,
+                                     samples_per_section, r)
+        found[r], a[r], b[r], fa[r], fb[r], n_cross[r] = res
+    a, b, fa, fb, it = _illinois(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
     # The end with the smaller residual (both are within rtol in u).
     u = np.where(np.abs(fa) < np.abs(fb), a, b)
     u = np.where(found, u, np.nan)
     pts = polyline_points(lines, np.where(found, u, 0.0)[:, None])[:, 0]
     pts[~found] = np.nan
-    res = np.full(m, np.nan)
+    res_ = np.full(m, np.nan)
     if found.any():
-        res[found] = np.abs(error(pts[found][:, None])[:, 0])
-    return Crossings(u, pts, found, n_cross, it, res)
+        res_[found] = np.abs(np.minimum(np.abs(fa), np.abs(fb))[found])
+    return Crossings(u, pts, found, n_cross, it, res_)
+
+
+def _call(error, points, rows):
+    """Evaluate ``error`` on points of the given lines (row-aware functions get the rows)."""
+    if getattr(error, "row_aware", False):
+        return error(points, rows)
+    return error(points)

@@ -129,6 +129,7 @@ class CircularBody:
     axial: AxialInterpolation = "pchip"
     points_per_section: tuple = None
     _interp: object = None
+    _lipschitz: float = None
 
     def __post_init__(self):
         name = self.name
@@ -156,8 +157,17 @@ class CircularBody:
         for field, value in (("x", x), ("radius", r), ("camber", c), ("origin", o),
                              ("segments", seg), ("mirrored", bool(self.mirrored))):
             object.__setattr__(self, field, value)
-        object.__setattr__(self, "_interp",
-                           _Piecewise(x, np.stack([r, c], axis=1), bounds, self.axial))
+        interp = _Piecewise(x, np.stack([r, c], axis=1), bounds, self.axial)
+        object.__setattr__(self, "_interp", interp)
+        # |grad e| <= 1 + |r'| + |c'| for e = |p_yz - c(x)| - r(x); slopes sampled densely on
+        # every piece (the derivative of a cubic piece is a quadratic: 9 samples are ample,
+        # and the 1.25 margin covers what falls between them).
+        t = np.linspace(0.0, 1.0, 9)
+        lo = interp.breaks
+        hi = np.append(lo[1:], x[-1])
+        xs = (lo[:, None] + t * (hi - lo)[:, None]).ravel()
+        slope = np.abs(interp(xs, 1)).max(axis=0) if xs.size else np.zeros(2)
+        object.__setattr__(self, "_lipschitz", float(1.25 * (1.0 + slope.sum())))
 
     @property
     def x_global(self):
@@ -197,6 +207,11 @@ class CircularBody:
         r = self.radius_at(x)
         c = self.center_at(x)
         return np.stack([x, c[..., 0] + r * np.cos(theta), c[..., 1] + r * np.sin(theta)], -1)
+
+    @property
+    def error_lipschitz(self):
+        """A bound on |d radial_error / d length| along any straight line [-]."""
+        return self._lipschitz
 
     def radial_error(self, points):
         """TM-4406 eq 6: distance from the local section centre minus r(x), vectorised.
@@ -312,6 +327,7 @@ class ArbitraryBody:
     resample: int = 201
     mirrored: bool = False
     _grid: np.ndarray = None
+    _lipschitz: float = None
 
     def __post_init__(self):
         name = self.name
@@ -333,8 +349,12 @@ class ArbitraryBody:
         grid = np.stack([np.stack([np.interp(u, _arc_fractions(a), a[:, i]) for i in (0, 1)], -1)
                          for a in secs])
         grid.flags.writeable = False
+        dx = np.diff(x)
+        move = np.abs(np.diff(grid, axis=0)).max(axis=(1, 2))
+        rate = np.max(np.where(dx > 0, move / np.where(dx > 0, dx, 1.0), 0.0), initial=0.0)
         for field, value in (("x", x), ("sections", tuple(secs)), ("segments", seg),
-                             ("_grid", grid), ("mirrored", bool(self.mirrored))):
+                             ("_grid", grid), ("mirrored", bool(self.mirrored)),
+                             ("_lipschitz", float(1.25 * (1.0 + np.sqrt(2.0) * rate)))):
             object.__setattr__(self, field, value)
 
     @property
@@ -378,6 +398,11 @@ class ArbitraryBody:
                             + y[..., -1] * z[..., 0] - y[..., 0] * z[..., -1])
         inside = (np.asarray(x) >= self.x[0]) & (np.asarray(x) <= self.x[-1])
         return np.where(inside, 2.0 * half, 0.0)
+
+    @property
+    def error_lipschitz(self):
+        """A bound on |d signed_distance / d length| along any straight line [-]."""
+        return self._lipschitz
 
     def signed_distance(self, points):
         """Distance in the plane x = const to the interpolated section, negative inside.
