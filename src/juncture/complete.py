@@ -21,7 +21,7 @@ from .fillet.area import keep_area as _keep_area
 from .fillet.circular import circular_fillet
 from .fillet.cubic import FilletLines, cubic_fillet
 from .geometry import Geometry
-from .intersect import intersect_body
+from .intersect import intersect_body_both
 from .model import CircularBody, Configuration
 from .networks import arc_points, juncture_networks, orient, split_counts
 
@@ -122,9 +122,8 @@ def _fillet_maker(wing, fillet, opts, body0):
     if fillet == "circular" and rho is None:
         rho = 0.1 * float(body0.radius.max())
 
-    def make(body):
-        iu = intersect_body(wing, body, "upper")
-        il = intersect_body(wing, body, "lower")
+    def make(body, hints=None):
+        iu, il = intersect_body_both(wing, body, hints=hints)
         if fillet is None:
             return iu, il, sharp_fillet(iu), _sharp_with_misses(body, il, iu)
         if fillet == "cubic":

@@ -197,8 +197,10 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
     body : CircularBody
         The original body.
     make_fillets : callable
-        ``make_fillets(body) -> (upper_inter, lower_inter, upper_fillet, lower_fillet)``
-        for a given body (the fillet is rebuilt on each re-designed body).
+        ``make_fillets(body, hints) -> (upper_inter, lower_inter, upper_fillet,
+        lower_fillet)`` for a given body (the fillet is rebuilt on each re-designed body);
+        ``hints`` is None or the previous intersections' section coordinates (upper, lower),
+        passed only while every re-designed body lies inside the original one.
     tolerance : float
         Relative area residual to reach at every fillet station.
 
@@ -208,16 +210,19 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
 
     Notes
     -----
-    Each iteration removes the current fillet area from the original body (not from the
-    previous iterate), so the iteration is a fixed point A = A_fillet(body(A)) on the vector of
-    fillet areas; it converges as fast as the fillet area's sensitivity to the radius is small.
-    An Aitken (secant) step per station is used once two iterates exist.
+    Each iteration removes an area t from the original body (not from the previous iterate),
+    so the problem is the fixed point t = A_fillet(body(t)) on the vector of station areas:
+    the paper's iteration, accelerated by Aitken's delta-squared step per station once three
+    iterates exist (a per-station secant was tried and converged no faster: the stations
+    move a little in x as the body shrinks, which couples them). The intersections are
+    warm-started from the previous iterate while the body only shrinks.
     """
     current = body
     first_met = None
     history = []
+    hints = None
     for it in range(1, max_iterations + 1):
-        parts = make_fillets(current)
+        parts = make_fillets(current, hints)
         x, a_f = fillet_added_area(current, *parts[2:], *parts[:2])
         a0 = np.pi * body.radius_at(x) ** 2
         a_b = np.pi * current.radius_at(x) ** 2
@@ -238,6 +243,8 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
             ok = np.isfinite(acc) & (np.abs(denom) > 1e-14 * np.maximum(np.abs(a2), 1e-300))
             target = np.where(ok, acc, a2)
         current = reduced_body(body, x, target)
+        # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
+        hints = (parts[0].u, parts[1].u) if np.all(target >= 0) else None
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
                            f"iterations (worst residual {residual.max():.3g} at x = "
                            f"{x[np.argmax(residual)]:.6g})", body.name)

@@ -15,7 +15,7 @@ from ..errors import GeometryError
 from ..model import ArbitraryBody, CircularBody, WingLike
 from .rays import find_crossings
 
-__all__ = ["BodyIntersection", "intersect_body"]
+__all__ = ["BodyIntersection", "intersect_body", "intersect_body_both"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -112,29 +112,51 @@ def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24, h
     GeometryError
         If the tip of a lofting line lies inside the body (the wing does not leave it).
     """
-    lines = wing.lofting_lines(side)  # (n_stations, n_sections, 3)
+    return _intersect(wing, body, (side,), samples_per_section,
+                      None if hint is None else (hint,))[0]
+
+
+def intersect_body_both(wing: WingLike, body, samples_per_section=24, hints=None):
+    """Upper and lower intersections in one vectorised solve: ``(upper, lower)``.
+
+    ``hints`` is ``(upper_u, lower_u)`` from a previous solve, or None.
+    """
+    return _intersect(wing, body, ("upper", "lower"), samples_per_section, hints)
+
+
+def _intersect(wing, body, sides, samples_per_section, hints):
+    per_side = [wing.lofting_lines(side) for side in sides]
+    lines = np.concatenate(per_side)  # (n_sides * n_stations, n_sections, 3)
     error = _error_function(body)
     tip_err = error(lines[:, -1])
     if np.any(tip_err <= 0):
         j = int(np.argmax(tip_err <= 0))
-        raise GeometryError(f"the tip of {side} lofting line {j + 1} lies inside {body.name}: "
-                            "the surface never leaves the body", wing.name, wing.n_sections)
+        side = sides[j // wing.n_stations]
+        raise GeometryError(f"the tip of {side} lofting line {j % wing.n_stations + 1} lies "
+                            f"inside {body.name}: the surface never leaves the body",
+                            wing.name, wing.n_sections)
     u_low = np.minimum(_u_axis(wing, body, lines), 0.0)
-    cr = find_crossings(lines, error, u_low, samples_per_section,
-                        lipschitz=body.error_lipschitz, hint=hint)
-    pts = cr.points
-    theta = np.full(len(pts), np.nan)
-    if cr.found.any():
-        theta[cr.found] = _body_angle(body, pts[cr.found])
-    name = f"{wing.name}/{body.name} {side}"
-    log = []
-    for j in np.flatnonzero(cr.n_crossings >= 2):
-        log.append(f"{name}: lofting line {j + 1} crosses {body.name} "
-                   f"{int(cr.n_crossings[j])} times; took the first reached coming inboard "
-                   f"(u = {cr.u[j]:.6g})")
-    for j in np.flatnonzero(~cr.found):
-        log.append(f"{name}: lofting line {j + 1} misses {body.name}")
-    log.append(f"{name}: {int(cr.found.sum())} of {len(pts)} lines solved in {cr.iterations} "
-               f"iterations, max residual {np.nanmax(cr.residual, initial=0.0):.3g}")
-    return BodyIntersection(name, side, pts, cr.u, cr.found, theta, cr.n_crossings,
-                            cr.iterations, cr.residual, tuple(log))
+    hint = None if hints is None else np.concatenate([np.asarray(h, float) for h in hints])
+    bound = getattr(body, "error_lipschitz_between", None) or body.error_lipschitz
+    cr = find_crossings(lines, error, u_low, samples_per_section, lipschitz=bound, hint=hint)
+    out = []
+    m = wing.n_stations
+    for k, side in enumerate(sides):
+        sl = slice(k * m, (k + 1) * m)
+        pts, found, u = cr.points[sl], cr.found[sl], cr.u[sl]
+        theta = np.full(m, np.nan)
+        if found.any():
+            theta[found] = _body_angle(body, pts[found])
+        name = f"{wing.name}/{body.name} {side}"
+        log = []
+        for j in np.flatnonzero(cr.n_crossings[sl] >= 2):
+            log.append(f"{name}: lofting line {j + 1} crosses {body.name} "
+                       f"{int(cr.n_crossings[sl][j])} times; took the first reached coming "
+                       f"inboard (u = {u[j]:.6g})")
+        for j in np.flatnonzero(~found):
+            log.append(f"{name}: lofting line {j + 1} misses {body.name}")
+        log.append(f"{name}: {int(found.sum())} of {m} lines solved in {cr.iterations} "
+                   f"iterations, max residual {np.nanmax(cr.residual[sl], initial=0.0):.3g}")
+        out.append(BodyIntersection(name, side, pts, u, found, theta, cr.n_crossings[sl],
+                                    cr.iterations, cr.residual[sl], tuple(log)))
+    return out

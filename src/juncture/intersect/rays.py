@@ -142,7 +142,7 @@ def _refine_dips(lines, error, line_rows, ua, ub, ea, eb, speed, lipschitz, max_
     idx = np.arange(n)
     a, b, fa, fb, sp = ua.copy(), ub.copy(), ea.copy(), eb.copy(), speed.copy()
     for _ in range(max_rounds):
-        keep = (fa + fb <= lipschitz * np.abs(b - a) * sp) & ~found[idx]
+        keep = (fa + fb <= lipschitz[idx] * np.abs(b - a) * sp) & ~found[idx]
         if not keep.any():
             break
         idx, a, b, fa, fb, sp = idx[keep], a[keep], b[keep], fa[keep], fb[keep], sp[keep]
@@ -181,7 +181,8 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
     pts = polyline_points(lines, knots)
     e = _call(error, pts, line_rows)
     seg_len = np.linalg.norm(np.diff(pts, axis=1), axis=-1)  # (m, n)
-    maybe = (e[:, :-1] <= 0) | (e[:, 1:] <= 0) | (e[:, :-1] + e[:, 1:] <= lipschitz * seg_len)
+    bound = _bound(lipschitz, pts[:, :-1], pts[:, 1:])
+    maybe = (e[:, :-1] <= 0) | (e[:, 1:] <= 0) | (e[:, :-1] + e[:, 1:] <= bound * seg_len)
     rows, segs = np.nonzero(maybe)
     found = np.zeros(m, bool)
     a = np.zeros(m)
@@ -201,13 +202,19 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
     # Pairs of outside samples that may hide an inside point: bisect them.
     du = np.abs(u1 - u0)
     speed = np.where(du > 0, seg_len[rows, segs] / np.where(du > 0, du, 1.0), 0.0)
+    seg_bound = bound[rows, segs]  # the segment's bound holds on every piece of it
     suspect = (eg[:, :-1] > 0) & (eg[:, 1:] > 0) & (
-        eg[:, :-1] + eg[:, 1:] <= lipschitz * speed[:, None] * np.abs(np.diff(grid, axis=1)))
+        eg[:, :-1] + eg[:, 1:] <= seg_bound[:, None] * speed[:, None]
+        * np.abs(np.diff(grid, axis=1)))
+    # Only dips tip-ward of a pair-row's first sign change can change the answer.
+    change = (eg[:, :-1] > 0) != (eg[:, 1:] > 0)
+    first_change = np.where(change.any(axis=1), np.argmax(change, axis=1), change.shape[1])
+    suspect &= np.arange(change.shape[1])[None, :] < first_change[:, None]
     pi, si = np.nonzero(suspect)
     if pi.size:
         ok, u_in, e_in = _refine_dips(lines[rows][pi], error, line_rows[rows][pi],
                                       grid[pi, si], grid[pi, si + 1], eg[pi, si],
-                                      eg[pi, si + 1], speed[pi], lipschitz)
+                                      eg[pi, si + 1], speed[pi], seg_bound[pi])
         if ok.any():
             # Insert each inside point as an extra sample between its pair: widen the grid by
             # one column and place it in sorted (tip-first) position.
@@ -262,9 +269,10 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
         1/samples of a section are seen as none (never mis-solved).
     rtol : float
         Relative tolerance on u (times max(1, |u|)).
-    lipschitz : float, optional
-        A bound on |d error / d length| along a line. Given, only segments that may hold a
-        crossing are sampled densely (exact screening, much faster); otherwise every segment.
+    lipschitz : float or callable, optional
+        A bound on |d error / d length| along a line, or ``bound(pa, pb)`` giving one per
+        segment pa -> pb. Given, only segments that may hold a crossing are sampled densely
+        (exact screening, much faster); otherwise every segment.
     hint : (m,) float, optional
         Previous crossings (e.g. of the same wing on a slightly changed body). Where
         [hint - w, hint + w] brackets a crossing with the outboard end outside, it is used
@@ -310,6 +318,13 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
     if found.any():
         res_[found] = np.abs(np.minimum(np.abs(fa), np.abs(fb))[found])
     return Crossings(u, pts, found, n_cross, it, res_)
+
+
+def _bound(lipschitz, pa, pb):
+    """Lipschitz bound per segment pa -> pb: a constant, or a callable local bound."""
+    if callable(lipschitz):
+        return np.asarray(lipschitz(pa, pb), float)
+    return np.full(pa.shape[:-1], float(lipschitz))
 
 
 def _call(error, points, rows):

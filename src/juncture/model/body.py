@@ -165,9 +165,14 @@ class CircularBody:
         t = np.linspace(0.0, 1.0, 9)
         lo = interp.breaks
         hi = np.append(lo[1:], x[-1])
-        xs = (lo[:, None] + t * (hi - lo)[:, None]).ravel()
-        slope = np.abs(interp(xs, 1)).max(axis=0) if xs.size else np.zeros(2)
-        object.__setattr__(self, "_lipschitz", float(1.25 * (1.0 + slope.sum())))
+        xs = lo[:, None] + t * (hi - lo)[:, None]
+        piece = np.abs(interp(xs, 1)).max(axis=1).sum(axis=-1)  # (n_pieces,) |r'| + |c'|
+        # Sparse table for range maxima over pieces: level k holds max(piece[i : i + 2^k]).
+        levels = [piece]
+        while (1 << len(levels)) <= piece.size:
+            prev, w = levels[-1], 1 << (len(levels) - 1)
+            levels.append(np.maximum(prev[:-w], prev[w:]))
+        object.__setattr__(self, "_lipschitz", (float(1.25 * (1.0 + piece.max())), levels))
 
     @property
     def x_global(self):
@@ -211,7 +216,34 @@ class CircularBody:
     @property
     def error_lipschitz(self):
         """A bound on |d radial_error / d length| along any straight line [-]."""
-        return self._lipschitz
+        return self._lipschitz[0]
+
+    def error_lipschitz_between(self, pa, pb):
+        """Local bound on |d radial_error / d length| on the segments pa -> pb, vectorised.
+
+        Uses the largest |r'| + |c'| over the body pieces the segment's x range spans
+        (1.25 times 1 + that slope), so a segment along the cylindrical mid-body is not
+        penalised by the steep nose.
+        """
+        xa = np.asarray(pa, float)[..., 0] - self.origin[0]
+        xb = np.asarray(pb, float)[..., 0] - self.origin[0]
+        brk = self._interp.breaks
+        ia = np.clip(np.searchsorted(brk, np.minimum(xa, xb), side="right") - 1, 0,
+                     brk.size - 1)
+        ib = np.clip(np.searchsorted(brk, np.maximum(xa, xb), side="right") - 1, 0,
+                     brk.size - 1)
+        levels = self._lipschitz[1]
+        span = ib - ia + 1
+        k = np.minimum(np.floor(np.log2(span)).astype(int), len(levels) - 1)
+        best = np.zeros(np.shape(ia))
+        for lev in range(len(levels)):  # a handful of levels, each vectorised
+            sel = k == lev
+            if sel.any():
+                tab = levels[lev]
+                w = 1 << lev
+                best[sel] = np.maximum(tab[np.minimum(ia[sel], tab.size - 1)],
+                                       tab[np.clip(ib[sel] - w + 1, 0, tab.size - 1)])
+        return 1.25 * (1.0 + best)
 
     def radial_error(self, points):
         """TM-4406 eq 6: distance from the local section centre minus r(x), vectorised.
