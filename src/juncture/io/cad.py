@@ -28,7 +28,8 @@ import numpy as np
 from ..errors import GeometryError, JunctureError, MissingDependencyError
 from ._registry import atomic_output, register_format, to_geometry
 
-__all__ = ["write_step", "write_iges", "write_bspline_surfaces", "ocp_api"]
+__all__ = ["write_step", "write_iges", "write_bspline_surfaces", "ocp_api", "network_face",
+           "section_points"]
 
 _INSTALL = "pip install juncture[cad]"
 
@@ -127,6 +128,43 @@ def _network_face(api, name, net):
         raise GeometryError("OpenCASCADE could not fit a B-spline surface through the "
                             "points", component=name)
     return api.MakeFace(fit.Surface(), 1e-9 * size).Face()
+
+
+def network_face(net, name="network"):
+    """An OCP face through a network's points (B-spline of degree 3 to 8, C2, fitted to 1e-7
+    of the network's size). For comparisons with OpenCASCADE (benchmarks, oracles)."""
+    return _network_face(ocp_api(), name, net)
+
+
+def section_points(shape_a, shape_b, samples_per_edge=64):
+    """Points along the intersection curves of two OCP shapes (BRepAlgoAPI_Section).
+
+    Returns
+    -------
+    (k, 3) float
+        ``samples_per_edge`` points on every edge of the section, edge after edge.
+    """
+    ocp_api()
+    from OCP.BRepAdaptor import BRepAdaptor_Curve
+    from OCP.BRepAlgoAPI import BRepAlgoAPI_Section
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopoDS import TopoDS
+
+    edge_of = _first(TopoDS, "Edge", "Edge_s")
+    sec = BRepAlgoAPI_Section(shape_a, shape_b)
+    sec.Build()
+    if not sec.IsDone():
+        raise GeometryError("OpenCASCADE could not compute the section")
+    out = []
+    exp = TopExp_Explorer(sec.Shape(), TopAbs_EDGE)
+    while exp.More():
+        curve = BRepAdaptor_Curve(edge_of(exp.Current()))
+        for t in np.linspace(curve.FirstParameter(), curve.LastParameter(), samples_per_edge):
+            p = curve.Value(float(t))
+            out.append((p.X(), p.Y(), p.Z()))
+        exp.Next()
+    return np.array(out, float).reshape(-1, 3)
 
 
 def _bspline_face(api, surf):
