@@ -211,8 +211,9 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         components' own networks), ``intersections`` (``"wing/body upper"``,
         ``"wing/body lower"``), ``fillets`` (``"fillet upper"``, ``"fillet lower"``, each
         (n_stations, n_points, 3) from the body to the wing), ``stations`` (``x``,
-        ``area_original``, ``area_fillet``, ``radius_original``, ``radius_new``, ``residual``,
-        ``iterations``) and a ``log``.
+        ``area_original``, ``area_fillet`` (the added area of the fillets on both sides of a
+        mirrored wing), ``area_body``, ``radius_original``, ``radius_new``, ``residual``,
+        ``iterations``), the ``configuration`` with the re-designed fuselage, and a ``log``.
 
     Examples
     --------
@@ -239,8 +240,9 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                             f"{body0.name} is a {type(body0).__name__}", body0.name)
     log = [f"complete: fillet={fillet}, keep_area={keep_area}, {opts}"]
     make = _fillet_maker(wing, fillet, opts, body0)
+    sides = 2 if (wing.mirrored and cfg.symmetric) else 1
     if keep_area and fillet is not None:
-        comp = _keep_area(body0, make, tolerance=opts.tolerance)
+        comp = _keep_area(body0, make, tolerance=opts.tolerance, sides=sides)
         body = comp.body
         iu, il, fu, fl = comp.fillets
         stations = {"x": comp.x, "area_original": comp.area_original,
@@ -257,6 +259,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         iu, il, fu, fl = make(body)
         if fillet is not None:
             x, a_f = fillet_added_area(body, fu, fl, iu, il)
+            a_f = sides * a_f
         else:
             x, a_f = fu.start[:, 0], np.zeros(len(fu.start))
         a0 = np.pi * body.radius_at(x) ** 2
@@ -287,5 +290,6 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                      f"{wing.name}/{body.name} lower": (fl.start if opts.single_network and
                                                          fillet is None else il.points)}
     fillets = {} if fillet is None else {"fillet upper": fu.points, "fillet lower": fl.points}
+    completed = cfg.with_component(body) if body is not body0 else cfg
     return Geometry(networks=nets, symmetry=sym, title=cfg.title, intersections=intersections,
-                    fillets=fillets, stations=stations, log=tuple(log))
+                    fillets=fillets, stations=stations, log=tuple(log), configuration=completed)

@@ -82,6 +82,9 @@ class Geometry:
         Per-station data of equal length (``x``, ``area_original``, ...).
     log : tuple of str
         What was done: options, iterations, residuals, warnings.
+    configuration : Configuration or None
+        The component model the networks were built from (for a completed geometry: with the
+        re-designed fuselage), for analyses that need the exact model.
     """
 
     networks: object = field(default_factory=dict)
@@ -91,6 +94,7 @@ class Geometry:
     fillets: object = field(default_factory=dict)
     stations: object = field(default_factory=dict)
     log: tuple = ()
+    configuration: object = None
 
     def __post_init__(self):
         nets = _freeze_dict(self.networks, lambda v, k: as_network(v, k))

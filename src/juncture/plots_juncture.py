@@ -105,7 +105,8 @@ def plot_fillet_sections(cfg, geo, n=6, wing="wing", body="body"):
             ax.set_xlim(ys.min() - pad, ys.max() + pad)
             ax.set_ylim(zs.min() - pad, zs.max() + pad)
         ax.set_aspect("equal")
-        ax.set_title(f"x = {x:.4g}, added area {st['area_fillet'][j]:.3g}", fontsize=9)
+        ax.set_title(f"x = {x:.4g}, added area {st['area_fillet'][j]:.3g} (both sides)",
+                     fontsize=9)
         ax.grid(True, lw=0.3, alpha=0.5)
     for ax in axes.ravel()[len(picks):]:
         ax.set_visible(False)

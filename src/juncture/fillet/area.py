@@ -189,7 +189,7 @@ def reduced_body(body, x, area_removed):
                         tuple(seg_sizes), body.mirrored, body.axial, body.points_per_section)
 
 
-def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
+def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
     """Shrink the body until body area + fillet area equals the original area (TM-4406).
 
     Parameters
@@ -203,10 +203,15 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
         passed only while every re-designed body lies inside the original one.
     tolerance : float
         Relative area residual to reach at every fillet station.
+    sides : {1, 2}
+        How many fillets share each body cross-section: 2 for a wing with a mirror image (the
+        body's pi r^2 is the whole section, so both sides' fillets are compensated), 1 for a
+        surface on the plane of symmetry.
 
     Returns
     -------
     Compensation
+        ``area_fillet`` is the added area of all ``sides`` fillets at each station.
 
     Notes
     -----
@@ -224,6 +229,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60):
     for it in range(1, max_iterations + 1):
         parts = make_fillets(current, hints)
         x, a_f = fillet_added_area(current, *parts[2:], *parts[:2])
+        a_f = sides * a_f
         a0 = np.pi * body.radius_at(x) ** 2
         a_b = np.pi * current.radius_at(x) ** 2
         residual = np.abs(a_b + a_f - a0) / np.where(a0 > 0, a0, 1.0)
