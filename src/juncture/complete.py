@@ -211,9 +211,12 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         components' own networks), ``intersections`` (``"wing/body upper"``,
         ``"wing/body lower"``), ``fillets`` (``"fillet upper"``, ``"fillet lower"``, each
         (n_stations, n_points, 3) from the body to the wing), ``stations`` (``x``,
-        ``area_original``, ``area_fillet`` (the added area of the fillets on both sides of a
-        mirrored wing), ``area_body``, ``radius_original``, ``radius_new``, ``residual``,
-        ``iterations``), the ``configuration`` with the re-designed fuselage, and a ``log``.
+        ``area_original``, ``area_fillet`` (the area added by filleting, on both sides of a
+        mirrored wing: with ``keep_area`` the fillets plus the wing root they uncover as the
+        body shrinks, which is what the body gives up), ``area_fillet_only`` (the fillets
+        alone, TM-4406 eq 14), ``area_body``, ``radius_original``, ``radius_new``,
+        ``residual``, ``iterations``), the ``configuration`` with the re-designed fuselage,
+        and a ``log``.
 
     Examples
     --------
@@ -246,7 +249,8 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         body = comp.body
         iu, il, fu, fl = comp.fillets
         stations = {"x": comp.x, "area_original": comp.area_original,
-                    "area_fillet": comp.area_fillet, "area_body": comp.area_body,
+                    "area_fillet": comp.area_fillet, "area_fillet_only": comp.area_fillet_only,
+                    "area_body": comp.area_body,
                     "radius_original": comp.radius_original, "radius_new": comp.radius_new,
                     "residual": comp.residual, "iterations": comp.iterations.astype(float)}
         log.append(f"keep_area: {comp.n_iterations} iterations, worst residual "
@@ -263,7 +267,8 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         else:
             x, a_f = fu.start[:, 0], np.zeros(len(fu.start))
         a0 = np.pi * body.radius_at(x) ** 2
-        stations = {"x": x, "area_original": a0, "area_fillet": a_f, "area_body": a0,
+        stations = {"x": x, "area_original": a0, "area_fillet": a_f,
+                    "area_fillet_only": a_f, "area_body": a0,
                     "radius_original": body.radius_at(x), "radius_new": body.radius_at(x),
                     "residual": np.abs(a_f) / np.where(a0 > 0, a0, 1.0),
                     "iterations": np.zeros(len(x))}
