@@ -197,6 +197,64 @@ def _cmd_blend(args):
     return 0
 
 
+def _wavedrag_cases(cfg, args):
+    """Label -> (configuration, completed geometry or None) for the wavedrag command."""
+    from .complete import complete
+
+    cases = {"original": None}
+    fillet = None if args.fillet in (None, "none") else args.fillet
+    if fillet is not None:
+        cases[f"{fillet} fillet"] = complete(cfg, fillet, False)
+        if args.keep_area:
+            cases[f"{fillet} fillet, fixed area"] = complete(cfg, fillet, True)
+    elif args.keep_area:
+        raise JunctureError("--keep-area needs a fillet (--fillet cubic or circular)")
+    return cases
+
+
+def _cmd_wavedrag(args):
+    import json
+
+    from .analysis import plot_area_distribution, wavedrag
+    from .io import atomic_output
+
+    cfg, warns = _read_with_warnings(args.deck)
+    for w in warns:
+        print(f"warning: {w}", file=sys.stderr)
+    results = {label: wavedrag(cfg, args.mach, n_x=args.n_x, n_theta=args.n_theta,
+                               geometry=geo)
+               for label, geo in _wavedrag_cases(cfg, args).items()}
+    first = results["original"]
+    last = list(results.values())[-1]
+    if args.output:
+        out = Path(args.output)
+        out.mkdir(parents=True, exist_ok=True)
+        plot_area_distribution(results, out / "areas.png", title=cfg.title)
+        with atomic_output(out / "wavedrag.json") as fh:
+            json.dump(results, fh, indent=1)
+    if args.json:
+        keys = ("mach", "D_over_q", "CD", "method")
+        doc = {k: last[k] for k in keys}
+        if len(results) > 1:
+            doc["cases"] = {label: {k: r[k] for k in keys} for label, r in results.items()}
+        print(json.dumps(doc, indent=1))
+        return 0
+    print(f"{cfg.title}")
+    print(f"method: {first['method']}" + ("" if first["mach"] is None else
+                                          f", Mach {first['mach']:g}"))
+    ref = first["reference_area"]
+    print(f"{'case':<34}{'D/q':>14}{'CD':>12}{'change':>10}")
+    for label, r in results.items():
+        cd = "" if r["CD"] is None else f"{r['CD']:.6f}"
+        change = (r["D_over_q"] - first["D_over_q"]) / first["D_over_q"]
+        print(f"{label:<34}{r['D_over_q']:>14.6g}{cd:>12}{100 * change:>9.3f}%")
+    if ref is None:
+        print("(no reference area in the input: CD not available)")
+    if args.output:
+        print(f"wrote {Path(args.output) / 'areas.png'} and wavedrag.json")
+    return 0
+
+
 def _cmd_massprops(args):
     from .massprops.command import run_massprops
 
@@ -250,6 +308,21 @@ def _build_parser():
     s.add_argument("--remedy", choices=("z-constraint", "parabolas"),
                    help="low-wing dip remedy for the cubic fillet")
     s.set_defaults(func=_cmd_complete)
+
+    s = sub.add_parser("wavedrag", help="area distributions and supersonic wave drag")
+    s.add_argument("deck")
+    s.add_argument("--mach", type=float,
+                   help="far-field wave drag at this Mach number (default: slender body)")
+    s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
+                   help="also analyse the configuration with this wing-body fillet")
+    s.add_argument("--keep-area", action="store_true",
+                   help="and with the fuselage re-designed to keep the area distribution")
+    s.add_argument("--json", action="store_true",
+                   help='print {"mach", "D_over_q", "CD", "method"} (of the last case)')
+    s.add_argument("-o", "--output", help="directory for areas.png and wavedrag.json")
+    s.add_argument("--n-x", type=int, default=101, help="stations / cuts per angle (101)")
+    s.add_argument("--n-theta", type=int, default=16, help="roll angles (16)")
+    s.set_defaults(func=_cmd_wavedrag)
 
     s = sub.add_parser("blend", help="G1 long-strake wing-body blend (Song, Ma & Wang 2008)")
     s.add_argument("spec", help="blend spec (JSON), e.g. examples/missile_blend.json")

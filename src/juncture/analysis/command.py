@@ -184,7 +184,12 @@ def plot_area_distribution(results, path, title=None):
 
     if not results:
         raise JunctureError("no area distributions to plot")
-    fig, ax = plt.subplots(figsize=(9, 5), layout="constrained")
+    many = len(results) > 1
+    fig, axes = plt.subplots(2 if many else 1, 1, figsize=(9, 7 if many else 5),
+                             layout="constrained", sharex=True, squeeze=False,
+                             height_ratios=(2, 1) if many else None)
+    ax = axes[0, 0]
+    base = None
     for label, res in results.items():
         try:
             x, a = np.asarray(res["x"], float), np.asarray(res["area"], float)
@@ -195,10 +200,21 @@ def plot_area_distribution(results, path, title=None):
                                 f"length, found shapes {x.shape} and {a.shape}")
         dq = res.get("D_over_q")
         ax.plot(x, a, lw=1.4, label=f"{label} (D/q = {dq:.4g})" if dq is not None else label)
-    ax.set_xlabel("x (aft)")
+        if many:
+            if base is None:
+                base = (x, a, label)
+            else:  # differences are what a designer looks for: they are tiny on A(x)
+                axes[1, 0].plot(x, a - np.interp(x, base[0], base[1]), lw=1.2,
+                                color=ax.lines[-1].get_color(), label=f"{label} - {base[2]}")
     ax.set_ylabel("normal cross-sectional area A(x), both halves")
     ax.grid(True, lw=0.3, alpha=0.5)
     ax.legend(fontsize=8, loc="best")
     ax.set_title(title or "area distribution")
+    if many:
+        axes[1, 0].axhline(0.0, color="0.5", lw=0.6)
+        axes[1, 0].set_ylabel("area difference")
+        axes[1, 0].grid(True, lw=0.3, alpha=0.5)
+        axes[1, 0].legend(fontsize=8, loc="best")
+    axes[-1, 0].set_xlabel("x (aft)")
     save(fig, path)
     return Path(path)

@@ -1,0 +1,76 @@
+"""juncture wavedrag: JSON output, the fixed-area proof, Sears-Haack through a real deck."""
+
+import json
+
+import numpy as np
+import pytest
+from tests.support import EXAMPLE_DECK, PDAS_DECK
+
+from juncture.cli import main
+from juncture.io.wavedrag import write_deck
+from juncture.model import CircularBody, Configuration
+
+
+def run_json(capsys, *args):
+    assert main(["wavedrag", *map(str, args), "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_json_has_the_documented_keys(capsys):
+    doc = run_json(capsys, PDAS_DECK)
+    assert set(doc) >= {"mach", "D_over_q", "CD", "method"}
+    assert doc["mach"] is None and doc["method"].startswith("slender-body")
+    np.testing.assert_allclose(doc["CD"], doc["D_over_q"] / 16.0)  # REFA of the deck
+    doc = run_json(capsys, PDAS_DECK, "--mach", "1.5", "--n-theta", "8")
+    assert doc["mach"] == 1.5 and "far-field" in doc["method"]
+
+
+@pytest.mark.parametrize("deck", [EXAMPLE_DECK, PDAS_DECK])
+@pytest.mark.parametrize("fillet", ["cubic", "circular"])
+def test_fillet_raises_drag_and_fixed_area_restores_it(capsys, deck, fillet):
+    doc = run_json(capsys, deck, "--fillet", fillet, "--keep-area")
+    cases = doc["cases"]
+    base = cases["original"]["D_over_q"]
+    assert cases[f"{fillet} fillet"]["D_over_q"] > base
+    assert abs(cases[f"{fillet} fillet, fixed area"]["D_over_q"] - base) < 1e-3 * base
+
+
+def _sears_haack_deck(path, length, radius_max, n=81):
+    x = length * (1 - np.cos(np.linspace(0, np.pi, n))) / 2  # clustered at both ends
+    xi = x / length
+    area = np.pi * radius_max ** 2 * (4 * xi * (1 - xi)) ** 1.5
+    body = CircularBody("body", x, np.sqrt(area / np.pi), segments=(n // 3, n // 3,
+                                                                   n - 2 * (n // 3)))
+    # Segments of a deck repeat their joint station: split x into three overlapping pieces.
+    k = n // 3
+    xs = np.concatenate([x[:k + 1], x[k:2 * k + 1], x[2 * k:]])
+    rs = np.concatenate([body.radius[:k + 1], body.radius[k:2 * k + 1], body.radius[2 * k:]])
+    body = CircularBody("body", xs, rs, segments=(k + 1, k + 1, n - 2 * k))
+    from juncture.io._deck_convert import configuration_to_deck
+
+    write_deck(configuration_to_deck(Configuration({"body": body}, title="SEARS-HAACK",
+                                                   reference_area=1.0)), path)
+    volume = 3 * np.pi * np.pi * radius_max ** 2 * length / 16
+    return 128 * volume ** 2 / (np.pi * length ** 4)
+
+
+@pytest.mark.filterwarnings("ignore::juncture.JunctureWarning")  # 7-column areas round
+@pytest.mark.parametrize("length, radius", [(100.0, 5.0), (60.0, 6.0), (240.0, 7.5)])
+def test_sears_haack_bodies_through_a_deck(tmp_path, capsys, length, radius):
+    deck = tmp_path / "sh.inp"
+    exact = _sears_haack_deck(deck, length, radius)
+    doc = run_json(capsys, deck, "--n-x", "121")
+    assert doc["D_over_q"] == pytest.approx(exact, rel=1e-3)
+
+
+def test_output_directory_gets_the_plot_and_numbers(tmp_path, capsys):
+    assert main(["wavedrag", str(PDAS_DECK), "--fillet", "cubic", "-o", str(tmp_path)]) == 0
+    assert (tmp_path / "areas.png").stat().st_size > 0
+    data = json.loads((tmp_path / "wavedrag.json").read_text())
+    assert set(data) == {"original", "cubic fillet"}
+    assert "D/q" in capsys.readouterr().out
+
+
+def test_keep_area_without_fillet_is_a_usage_error(capsys):
+    assert main(["wavedrag", str(PDAS_DECK), "--keep-area"]) == 2
+    assert "--keep-area needs a fillet" in capsys.readouterr().err
