@@ -4,11 +4,11 @@ import json
 
 import numpy as np
 import pytest
-from tests.support import EXAMPLE_DECK, PDAS_DECK
 
 from juncture.cli import main
 from juncture.io.wavedrag import write_deck
 from juncture.model import CircularBody, Configuration
+from tests.support import EXAMPLE_DECK, PDAS_DECK
 
 
 def run_json(capsys, *args):
