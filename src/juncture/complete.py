@@ -65,6 +65,12 @@ class CompleteOptions:
         Relative area tolerance of the keep-area iteration.
     wing, body : str
         Names of the wing and fuselage components.
+    pairs : tuple of (a, b, role)
+        Touching pairs stated explicitly (role "body", "upper" or "lower", see
+        :mod:`juncture.intersect.pairs`); the others are found automatically.
+    empennage_sections : int
+        Sections interpolated between root and tip of canards, fins, tails and pylons given
+        by two sections only (TM-4607).
     """
 
     theta_u_deg: float = 20.0
@@ -80,6 +86,8 @@ class CompleteOptions:
     tolerance: float = 1e-9
     wing: str = "wing"
     body: str = "body"
+    pairs: tuple = ()
+    empennage_sections: int = 4
     extra: dict = field(default_factory=dict)
 
 
@@ -186,6 +194,45 @@ def _single_network(wing, body, upper, lower, n_half):
     return out, [s for s in seams if s["a"].startswith("wing")]
 
 
+def _other_components(cfg, wing, body, opts, log):
+    """Intersections and networks of every component except the main wing and fuselage."""
+    from .component_networks import interpolated, nacelle_network, trimmed_networks
+    from .intersect import find_intersections
+    from .model import WingLike
+
+    work = cfg
+    for comp in cfg.wings:
+        if comp.name != wing.name and comp.kind in ("canard", "tail", "fin", "pylon"):
+            work = work.with_component(interpolated(comp, opts.empennage_sections))
+    found = find_intersections(work, explicit=opts.pairs, skip={(wing.name, body.name)})
+    inters, by_comp, pylons = {}, {}, {}
+    for pair, (up, lo) in found.items():
+        inters[up.name], inters[lo.name] = up.points, lo.points
+        log.extend(up.log + lo.log)
+        by_comp.setdefault(pair.a, {"upper": [], "lower": []})
+        by_comp[pair.a]["upper"].append(up)
+        by_comp[pair.a]["lower"].append(lo)
+        if pair.role == "body" and not isinstance(work[pair.b], WingLike) and \
+                pair.b != body.name:
+            pylons.setdefault(pair.b, []).append((up, lo))
+    log.append("touching pairs: " + ", ".join(f"{p.a}/{p.b} ({p.role})" for p in found))
+    nets = {}
+    for comp in work:
+        if comp.name in (wing.name, body.name):
+            continue
+        plane = "xz" if (cfg.symmetric and comp.mirrored) else None
+        if comp.name in by_comp:
+            mine = trimmed_networks(comp, by_comp[comp.name], log)
+        elif comp.name in pylons:
+            mine = {comp.name: nacelle_network(comp, pylons[comp.name])}
+        else:
+            mine = comp.networks()
+            if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
+                plane = "xz"  # a centre-line body described by its y >= 0 half
+        nets.update({k: (v, plane) for k, v in mine.items()})
+    return nets, inters
+
+
 def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=False,
              options: CompleteOptions | None = None, **kwargs):
     """Complete the wing-body juncture of ``cfg`` into one set of networks (TM-4406).
@@ -196,7 +243,10 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         Must hold a wing-type component (``options.wing``, default ``"wing"``) and a circular
         fuselage (``options.body``, default ``"body"``).
     fillet : {None, "cubic", "circular"}
-        No fillet (sharp intersection), cubic-arc fillet (eq 7) or circular-arc fillet.
+        No fillet (sharp intersection), cubic-arc fillet (eq 7) or circular-arc fillet at the
+        wing-body juncture. Every other touching pair (fins, tails and canards on the body,
+        fins on the wing, pylons between wing and nacelles) is intersected too (TM-4607) and
+        those components are trimmed at their intersection lines.
     keep_area : bool
         Re-design the fuselage radius so body + fillet area equals the original area at every
         fillet station (TM-4406, "Redesign To Compensate for Added Volume").
@@ -283,18 +333,16 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     for s in seams:
         log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
     sym = {k: "xz" for k in nets}
-    raw = cfg.to_geometry()
-    for comp_ in cfg:
-        if comp_.name in (wing.name, body0.name):
-            continue
-        for k in comp_.networks():
-            nets[k] = raw.networks[k]
-            if k in raw.symmetry:
-                sym[k] = raw.symmetry[k]
     intersections = {f"{wing.name}/{body.name} upper": iu.points,
                      f"{wing.name}/{body.name} lower": (fl.start if opts.single_network and
                                                          fillet is None else il.points)}
-    fillets = {} if fillet is None else {"fillet upper": fu.points, "fillet lower": fl.points}
     completed = cfg.with_component(body) if body is not body0 else cfg
+    other_nets, other_inters = _other_components(completed, wing, body, opts, log)
+    intersections.update(other_inters)
+    for k, (net, plane) in other_nets.items():
+        nets[k] = net
+        if plane is not None:
+            sym[k] = plane
+    fillets = {} if fillet is None else {"fillet upper": fu.points, "fillet lower": fl.points}
     return Geometry(networks=nets, symmetry=sym, title=cfg.title, intersections=intersections,
                     fillets=fillets, stations=stations, log=tuple(log), configuration=completed)

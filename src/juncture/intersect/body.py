@@ -15,7 +15,14 @@ from ..errors import GeometryError
 from ..model import ArbitraryBody, CircularBody, WingLike
 from .rays import find_crossings
 
-__all__ = ["BodyIntersection", "intersect_body", "intersect_body_both"]
+__all__ = ["BodyIntersection", "intersect_body", "intersect_body_both", "side_label"]
+
+
+def side_label(wing, side):
+    """"upper"/"lower" for wing-type surfaces, "outboard"/"inboard" for fins and pylons."""
+    if wing.span_axis == 2:
+        return {"upper": "outboard", "lower": "inboard"}[side]
+    return side
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -147,7 +154,7 @@ def _intersect(wing, body, sides, samples_per_section, hints):
         theta = np.full(m, np.nan)
         if found.any():
             theta[found] = _body_angle(body, pts[found])
-        name = f"{wing.name}/{body.name} {side}"
+        name = f"{wing.name}/{body.name} {side_label(wing, side)}"
         log = []
         for j in np.flatnonzero(cr.n_crossings[sl] >= 2):
             log.append(f"{name}: lofting line {j + 1} crosses {body.name} "

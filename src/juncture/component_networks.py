@@ -1,0 +1,140 @@
+"""Output networks of the components around the main juncture (TM-4607, "Output").
+
+- A wing-like surface that meets other components is trimmed there: the intersection line at
+  its root end replaces the root section (a fin or tail on the fuselage, a fin on the wing,
+  a pylon on its nacelle) and, for a pylon, the line where it meets the wing replaces its tip
+  section. Canards, fins and tails given by root and tip only get interpolated sections
+  first (their count is an option).
+- A nacelle (pod) that carries a pylon gets cross-sections interpolated at the x of the
+  pylon-nacelle intersection points; there each cross-section is the arc from the outboard
+  intersection line round the bottom to the inboard one (the part under the pylon belongs to
+  the pylon).
+
+A lofting line that never meets the other component keeps its input end point, and the log
+says so (a warning, never a silent change).
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from .errors import JunctureWarning
+from .intersect.body import side_label
+
+__all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike"]
+
+
+def interpolated(wing, count):
+    """``wing`` with ``count`` extra sections between root and tip if it has only two."""
+    if wing.n_sections != 2 or count <= 0:
+        return wing
+    s = wing.span_stations
+    return wing.with_sections(s[0] + (s[1] - s[0]) * np.arange(1, count + 1) / (count + 1))
+
+
+def orient_winglike(wing, side, pts):
+    """Point order of a wing-like network so that normals point outward (as WingLike)."""
+    e_span = np.eye(3)[wing.span_axis]
+    e_thick = np.eye(3)[wing.thickness_axis]
+    natural_out = float(np.cross([1.0, 0.0, 0.0], e_span) @ e_thick)
+    sign = 1.0 if side == "upper" else -1.0
+    return pts if sign * natural_out > 0 else pts[:, ::-1]
+
+
+def _end_line(wing, side, inter, log):
+    lines = wing.lofting_lines(side)
+    missed = ~inter.found
+    at_root = np.nanmean(inter.u) < 0.5 * (wing.n_sections - 1)
+    fallback = lines[:, 0] if at_root else lines[:, -1]
+    pts = np.where(missed[:, None], fallback, inter.points)
+    u = np.where(missed, 0.0 if at_root else wing.n_sections - 1.0, inter.u)
+    for j in np.flatnonzero(missed):
+        msg = (f"{inter.name}: lofting line {j + 1} never meets the other component; its input "
+               f"{'root' if at_root else 'tip'} point is kept")
+        log.append(msg)
+        warnings.warn(msg, JunctureWarning, stacklevel=3)
+    return at_root, pts, u
+
+
+def trimmed_networks(wing, side_inters, log):
+    """Networks of ``wing`` cut at its intersection lines.
+
+    Parameters
+    ----------
+    wing : WingLike
+        Already interpolated if wanted (the intersections must be of this very object).
+    side_inters : dict of str to list of BodyIntersection
+        For "upper" and "lower": the intersections of that surface with other components.
+
+    Returns
+    -------
+    dict of str to (n_lines, n_points, 3)
+    """
+    nets = {}
+    for side in ("upper", "lower"):
+        sec = wing.section_points(side)  # (n_sections, n_stations, 3)
+        first, last = None, None
+        lo, hi = -np.inf, np.inf
+        for inter in side_inters.get(side, []):
+            at_root, pts, u = _end_line(wing, side, inter, log)
+            if at_root:
+                first, lo = pts, max(lo, float(np.max(u)))
+            else:
+                last, hi = pts, min(hi, float(np.min(u)))
+        k = np.arange(wing.n_sections)
+        keep = sec[(k > lo + 1e-9) & (k < hi - 1e-9)]
+        parts = ([first[None]] if first is not None else []) + [keep] + \
+            ([last[None]] if last is not None else [])
+        net = np.concatenate(parts, axis=0)
+        nets[f"{wing.name} {side_label(wing, side)}"] = orient_winglike(wing, side, net)
+    return nets
+
+
+def nacelle_network(pod, pylon_inters, n_points=None):
+    """A pod's cross-sections, open under its pylon(s) (TM-4607).
+
+    Parameters
+    ----------
+    pod : CircularBody
+    pylon_inters : list of (outboard BodyIntersection, inboard BodyIntersection)
+        Each pylon's intersections with this pod.
+    n_points : int, optional
+        Points per cross-section (default 2 * 19 - 1).
+
+    Returns
+    -------
+    (n_lines, n_points, 3) float
+        Cross-sections at the pod stations and at the outboard intersection points' x; where a
+        pylon sits, each runs from its outboard line round the bottom to its inboard line.
+    """
+    n = int(n_points or 37)
+    xg = pod.x_global
+    spans = []
+    for out_i, in_i in pylon_inters:
+        ok_o, ok_i = out_i.found, in_i.found
+        if not ok_o.any() or not ok_i.any():
+            continue
+        xo = out_i.points[ok_o, 0]
+        c = pod.center_at(xo)
+        th_o = np.arctan2(out_i.points[ok_o, 2] - c[:, 1], out_i.points[ok_o, 1] - c[:, 0])
+        ci = pod.center_at(in_i.points[ok_i, 0])
+        th_i = np.arctan2(in_i.points[ok_i, 2] - ci[:, 1], in_i.points[ok_i, 1] - ci[:, 0])
+        order = np.argsort(in_i.points[ok_i, 0])
+        th_i_at = np.interp(xo, in_i.points[ok_i, 0][order], np.unwrap(th_i[order]))
+        spans.append((xo, th_o, th_i_at))
+    xs = np.union1d(xg, np.concatenate([s[0] for s in spans])) if spans else xg
+    # Full circles start and end at the top, so the arcs under a pylon continue them smoothly.
+    lo = np.full(xs.size, 0.5 * np.pi)
+    hi = np.full(xs.size, 2.5 * np.pi)
+    for xo, th_o, th_i in spans:
+        order = np.argsort(xo)
+        inside = (xs >= xo.min()) & (xs <= xo.max())
+        # From the inboard line (theta just above pi/2) round the bottom to the outboard one.
+        lo[inside] = np.interp(xs[inside], xo[order], np.mod(th_i[order], 2 * np.pi))
+        hi[inside] = np.interp(xs[inside], xo[order], np.mod(th_o[order], 2 * np.pi)) + \
+            2 * np.pi
+    t = np.linspace(0.0, 1.0, n)
+    theta = lo[:, None] + t[None, :] * (hi - lo)[:, None]
+    return pod.point(xs[:, None], theta)

@@ -1,0 +1,113 @@
+"""Which components touch, and how (TM-4607): found automatically or stated explicitly.
+
+Candidates come from bounding boxes (each grown by a small margin); each candidate is then
+confirmed by the solver: a pair touches if at least one lofting line meets the other
+component. Roles:
+
+- ``"body"``: a wing-like surface meets a body (wing, canard, tail or fin on the fuselage;
+  pylon on a nacelle), TM-4406 eqs 4-6 or TM-4607 eq 8;
+- ``"upper"``: a fin stands on a wing-type surface (TM-4607 eq 7, searched from its tip);
+- ``"lower"``: a pylon hangs under a wing-type surface (eq 7, searched from its root).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import GeometryError
+from ..model import ArbitraryBody, CircularBody, WingLike
+from .body import intersect_body_both, side_label
+from .winglike import intersect_winglike
+
+__all__ = ["Pair", "touching_pairs", "find_intersections", "side_label", "intersect_pair"]
+
+
+@dataclass(frozen=True, slots=True)
+class Pair:
+    """Component ``a`` (wing-like) meets component ``b`` in the given role."""
+
+    a: str
+    b: str
+    role: str  # "body", "upper" or "lower"
+
+
+def _box(comp):
+    pts = np.concatenate([n.reshape(-1, 3) for n in comp.networks().values()])
+    return pts.min(axis=0), pts.max(axis=0)
+
+
+def _overlap(a, b, margin):
+    (alo, ahi), (blo, bhi) = a, b
+    pad = margin * np.maximum(ahi - alo, bhi - blo).max()
+    return bool(np.all(alo - pad <= bhi) and np.all(blo - pad <= ahi))
+
+
+def intersect_pair(cfg, pair, **kwargs):
+    """The intersections of a pair: a tuple (one per surface of ``a``) of BodyIntersection."""
+    a, b = cfg[pair.a], cfg[pair.b]
+    if pair.role == "body":
+        return tuple(intersect_body_both(a, b, **kwargs))
+    return tuple(intersect_winglike(a, b, pair.role, side, **kwargs)
+                 for side in ("upper", "lower"))
+
+
+def touching_pairs(cfg, margin=0.02, explicit=()):
+    """Every touching (wing-like, other) pair of ``cfg`` (see :func:`find_intersections`)."""
+    return list(find_intersections(cfg, margin, explicit))
+
+
+def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
+    """Every touching (wing-like, other) pair of ``cfg`` with its intersections.
+
+    Parameters
+    ----------
+    cfg : Configuration
+    margin : float
+        Bounding boxes are grown by this fraction of the larger box before the test.
+    explicit : iterable of Pair or (a, b, role) tuples
+        Pairs stated by the user; a component named in any explicit pair (as ``a``) is not
+        searched automatically.
+    skip : iterable of (a, b)
+        Pairs handled elsewhere (e.g. the wing-body juncture).
+
+    Returns
+    -------
+    dict of Pair to tuple of BodyIntersection
+        One intersection per surface of ``a`` (upper/outboard, lower/inboard).
+    """
+    pairs = [p if isinstance(p, Pair) else Pair(*p) for p in explicit]
+    for p in pairs:
+        for name in (p.a, p.b):
+            cfg[name]  # raises GeometryError naming a missing component
+        if p.role not in ("body", "upper", "lower"):
+            raise GeometryError(f"pair role must be 'body', 'upper' or 'lower', found "
+                                f"{p.role!r}", p.a)
+    stated = {p.a for p in pairs}
+    skip = {tuple(s) for s in skip}
+    out = {p: intersect_pair(cfg, p) for p in pairs if (p.a, p.b) not in skip}
+    boxes = {c.name: _box(c) for c in cfg}
+    for a in cfg.wings:
+        if a.name in stated:
+            continue
+        for b in cfg:
+            if b is a or (a.name, b.name) in skip or \
+                    not _overlap(boxes[a.name], boxes[b.name], margin):
+                continue
+            if isinstance(b, (CircularBody, ArbitraryBody)):
+                roles = ["body"]
+            elif isinstance(b, WingLike) and a.span_axis == 2 and b.span_axis == 1:
+                roles = ["upper", "lower"]
+            else:
+                continue
+            for role in roles:
+                pair = Pair(a.name, b.name, role)
+                try:
+                    res = intersect_pair(cfg, pair)
+                except GeometryError:
+                    continue
+                if any(r.found.any() for r in res):
+                    out[pair] = res
+                    break
+    return out
