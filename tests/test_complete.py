@@ -92,3 +92,21 @@ def test_complete_geometry_writes_to_every_format(tmp_path):
         jc.write(geo, tmp_path / f"out.{ext}")
     back = jc.read(tmp_path / "out.wgs")
     assert set(back.networks) == set(geo.networks)
+
+
+@pytest.mark.parametrize("fillet", [None, "cubic"])
+def test_whole_configuration_splits_the_body_by_theta_b(fillet):
+    cfg = example()
+    geo = jc.complete(cfg, fillet, keep_area=fillet is not None)
+    assert {"body upper", "body lower", "wing upper", "wing lower"} <= set(geo.networks)
+    seams = [s for s in geo.log if s.startswith("seam")]
+    # Wing, tail (upper and lower) and the centre-line fin all meet the fuselage networks.
+    assert len(seams) == 5 and max(seam_gaps(geo)) < 1e-12
+    body = geo.configuration["body"]
+    up = geo.networks["body upper"]
+    assert np.abs(body.radial_error(up)).max() < 1e-9 * body.length
+    # The upper surface starts at the fin's intersection where the fin stands.
+    fin = geo.intersections["fin 3/body outboard"]
+    first = up[:, 0] if up[0, 0, 2] > up[0, -1, 2] else up[:, -1]
+    for p in fin:
+        assert np.min(np.linalg.norm(first - p, axis=1)) < 1e-9

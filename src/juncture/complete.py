@@ -56,8 +56,11 @@ class CompleteOptions:
         Circular fillet radius rho [deck length]; None: 10 % of the largest body radius.
     n_fillet_points : int
         Points per fillet line.
-    blocks : {4, 6}
-        Output layout.
+    blocks : {None, 4, 6, "split"}
+        Output layout: TM-4406's 4 or 6 blocks, or TM-4607's fuselage upper and lower
+        surfaces split by theta_b(x) through the canard, wing and tail regions (starting at a
+        centre-line fin's intersection). None: "split" when components other than the wing
+        touch the fuselage, else 4.
     single_network : bool
         Fuselage as one network with the lower intersection re-interpolated at the upper
         points' x (TM-4406 fig 4) and points redistributed around the wing (fig 5).
@@ -81,7 +84,7 @@ class CompleteOptions:
     remedy: str | None = None
     fillet_radius: float | None = None
     n_fillet_points: int = 9
-    blocks: int = 4
+    blocks: object = None
     single_network: bool = False
     tolerance: float = 1e-9
     wing: str = "wing"
@@ -205,8 +208,10 @@ def _other_components(cfg, wing, body, opts, log):
         if comp.name != wing.name and comp.kind in ("canard", "tail", "fin", "pylon"):
             work = work.with_component(interpolated(comp, opts.empennage_sections))
     found = find_intersections(work, explicit=opts.pairs, skip={(wing.name, body.name)})
-    inters, by_comp, pylons = {}, {}, {}
+    inters, by_comp, pylons, attached = {}, {}, {}, []
     for pair, (up, lo) in found.items():
+        if pair.b == body.name:
+            attached.append((work[pair.a], up, lo))
         inters[up.name], inters[lo.name] = up.points, lo.points
         log.extend(up.log + lo.log)
         by_comp.setdefault(pair.a, {"upper": [], "lower": []})
@@ -230,7 +235,37 @@ def _other_components(cfg, wing, body, opts, log):
             if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
                 plane = "xz"  # a centre-line body described by its y >= 0 half
         nets.update({k: (v, plane) for k, v in mine.items()})
-    return nets, inters
+    return nets, inters, attached
+
+
+def _split_layout(body, wing, fu, fl, attached, n_half, log):
+    """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
+    from .body_split import Boundary, boundary_from_points, seam_gap, split_body
+
+    ups = [Boundary(fu.start[:, 0], fu.theta_start, "wing")]
+    los = [Boundary(fl.start[:, 0], fl.theta_start, "wing")]
+    fins = []
+    for comp, up, lo in attached:
+        if comp.span_axis == 1:
+            ups.append(boundary_from_points(body, up.points, comp.name))
+            los.append(boundary_from_points(body, lo.points, comp.name))
+        elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
+            fins.append(boundary_from_points(body, up.points, comp.name))
+    nets = split_body(body, ups, los, fins, n_upper=n_half, n_lower=n_half)
+    six, _ = juncture_networks(wing, body, fu, fl, 6, n_half)
+    nets["wing upper"], nets["wing lower"] = six["wing upper"], six["wing lower"]
+    seams = [{"a": "body upper", "b": "wing upper", "seam": "fillet start line",
+              "points": len(fu.start), "max_gap": seam_gap(fu.start, nets["body upper"])},
+             {"a": "body lower", "b": "wing lower", "seam": "fillet start line",
+              "points": len(fl.start), "max_gap": seam_gap(fl.start, nets["body lower"])}]
+    for comp, up, lo in attached:
+        for inter, net in ((up, "body upper"), (lo, "body lower")):
+            if comp.span_axis == 2 and (net == "body lower" or comp.mirrored):
+                continue
+            seams.append({"a": net, "b": comp.name, "seam": f"{inter.name} line",
+                          "points": int(inter.found.sum()),
+                          "max_gap": seam_gap(inter.points, nets[net])})
+    return nets, seams
 
 
 def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=False,
@@ -325,19 +360,24 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     for part in (iu, il, fu, fl):
         log.extend(part.log)
     n_half = (body.points_per_section or (19,))[0]
+    completed = cfg.with_component(body) if body is not body0 else cfg
+    other_nets, other_inters, attached = _other_components(completed, wing, body, opts, log)
+    layout = opts.blocks
+    if layout is None:
+        layout = "split" if attached else 4
     if opts.single_network:
         fl = _reinterpolated_lower(body, fu, fl)
         nets, seams = _single_network(wing, body, fu, fl, n_half)
+    elif layout == "split":
+        nets, seams = _split_layout(body, wing, fu, fl, attached, n_half, log)
     else:
-        nets, seams = juncture_networks(wing, body, fu, fl, opts.blocks, n_half)
+        nets, seams = juncture_networks(wing, body, fu, fl, layout, n_half)
     for s in seams:
         log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
     sym = {k: "xz" for k in nets}
     intersections = {f"{wing.name}/{body.name} upper": iu.points,
                      f"{wing.name}/{body.name} lower": (fl.start if opts.single_network and
                                                          fillet is None else il.points)}
-    completed = cfg.with_component(body) if body is not body0 else cfg
-    other_nets, other_inters = _other_components(completed, wing, body, opts, log)
     intersections.update(other_inters)
     for k, (net, plane) in other_nets.items():
         nets[k] = net

@@ -54,7 +54,8 @@ def _num(value, fmt=".6g"):
 
 def _table(headers, rows, total=None, text_columns=(0,)):
     """An HTML table; ``rows`` hold already-escaped cell strings."""
-    head = "".join(f"<th>{_e(h)}</th>" for h in headers)
+    head = "".join(f'<th class="text">{_e(h)}</th>' if i and i in text_columns
+                   else f"<th>{_e(h)}</th>" for i, h in enumerate(headers))
     body = []
     for row in list(rows) + ([total] if total else []):
         cells = "".join(f'<td class="text">{c}</td>' if i and i in text_columns

@@ -32,7 +32,7 @@ th, td { padding: 3px 10px; border-bottom: 1px solid var(--rule); text-align: ri
 th { background: var(--band); font-weight: 600; }
 td:first-child, th:first-child { text-align: left; }
 tr.total td { font-weight: 700; border-top: 2px solid var(--ink); }
-td.text { text-align: left; }
+td.text, th.text { text-align: left; }
 .note { color: var(--muted); font-size: 12px; margin: 2px 0 8px; }
 details { margin: 6px 0; }
 summary { cursor: pointer; color: var(--accent); }

@@ -3,8 +3,9 @@
 The viewer reads the JSON of ``<script type="application/json" id="jr-data">`` (written by
 :func:`juncture.report.wireframe_data`) and draws every polyline on ``<canvas id="jr-canvas">``
 in orthographic projection. Axes are the project's (x aft, y starboard, z up). Drag rotates
-(yaw about z, pitch about the screen's horizontal axis), the wheel zooms, the buttons select a
-view or reset. It draws once as soon as it runs, and again on every change or resize.
+(yaw about z, pitch about the screen's horizontal axis), shift-drag pans, the wheel zooms,
+the buttons select a view (fitted to the canvas) or reset. It draws once as soon as it
+runs, and again on every change or resize.
 """
 
 from __future__ import annotations
@@ -20,8 +21,29 @@ REPORT_JS = r"""
   var ctx = canvas.getContext("2d");
   var VIEWS = {iso: [0.75, 0.5], top: [0, Math.PI / 2], side: [0, 0],
                front: [Math.PI / 2, 0]};
-  var state = {yaw: VIEWS.iso[0], pitch: VIEWS.iso[1], zoom: 1, panX: 0, panY: 0};
+  var state = {yaw: VIEWS.iso[0], pitch: VIEWS.iso[1], zoom: 1, panX: 0, panY: 0,
+               extX: 1, extU: 1};
   var c = data.centre, size = data.size || 1;
+
+  function eachPoint(fn) {
+    data.networks.concat(data.intersections).forEach(function (item) {
+      item.lines.forEach(function (line) {
+        for (var k = 0; k < line.length; k += 3) {
+          fn(line[k] - c[0], line[k + 1] - c[1], line[k + 2] - c[2]);
+        }
+      });
+    });
+  }
+
+  function fit() {  // the model's projected extent in this view, kept while rotating
+    var b = basis(), ex = 1e-9 * size, eu = 1e-9 * size;
+    eachPoint(function (px, py, pz) {
+      ex = Math.max(ex, Math.abs(b.X[0] * px + b.X[1] * py + b.X[2] * pz));
+      eu = Math.max(eu, Math.abs(b.U[0] * px + b.U[1] * py + b.U[2] * pz));
+    });
+    state.extX = 2 * ex;
+    state.extU = 2 * eu;
+  }
 
   function basis() {
     var cy = Math.cos(state.yaw), sy = Math.sin(state.yaw);
@@ -41,7 +63,7 @@ REPORT_JS = r"""
     ctx.fillStyle = "#fbfbfd";
     ctx.fillRect(0, 0, w, h);
     var b = basis();
-    var s = state.zoom * 0.92 * Math.min(w, h * 1.6) / size;
+    var s = state.zoom * 0.9 * Math.min(w / state.extX, h / state.extU);
     var ox = w / 2 + state.panX, oy = h / 2 + state.panY;
     function path(line) {
       for (var k = 0; k < line.length; k += 3) {
@@ -61,7 +83,7 @@ REPORT_JS = r"""
       ctx.stroke();
     });
     ctx.globalAlpha = 1;
-    ctx.lineWidth = 2.2;
+    ctx.lineWidth = 1.8;
     ctx.strokeStyle = "#d62728";
     data.intersections.forEach(function (inter) {
       ctx.beginPath();
@@ -91,7 +113,10 @@ REPORT_JS = r"""
   function setView(name) {
     state.yaw = VIEWS[name][0];
     state.pitch = VIEWS[name][1];
-    if (name === "iso") { state.zoom = 1; state.panX = 0; state.panY = 0; }
+    state.zoom = 1;
+    state.panX = 0;
+    state.panY = 0;
+    fit();
     draw();
   }
 
@@ -128,6 +153,7 @@ REPORT_JS = r"""
     btn.addEventListener("click", function () { setView(btn.getAttribute("data-view")); });
   });
   window.addEventListener("resize", draw);
+  fit();
   draw();
 })();
 """

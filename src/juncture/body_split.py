@@ -1,0 +1,110 @@
+"""The fuselage as upper and lower surfaces split by the bounding curve theta_b(x) (TM-4607).
+
+From the nose, theta_b varies linearly from 0 to its value at the first region's leading
+edge; in the canard, wing and tail regions it follows the upper (for the upper surface) or
+lower (for the lower surface) intersection line of that component; between regions it varies
+linearly from one region's trailing-edge value to the next region's leading-edge value, and
+after the last region back to 0 at the end of the fuselage. Upper-surface points are spaced
+equally from theta = pi/2 down to theta_b, except where a fin stands on the fuselage: there
+they begin at the fin's intersection angle. Lower-surface points run from -pi/2 up to the
+lower bounding curve. Stations: the body's own plus every intersection point's x, so each
+network boundary passes exactly through the intersection points it meets.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .networks import orient
+
+__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "seam_gap"]
+
+
+class Boundary:
+    """A curve on the body given by stations x and angles theta (sorted in x)."""
+
+    def __init__(self, x, theta, name=""):
+        order = np.argsort(x)
+        self.x = np.asarray(x, float)[order]
+        self.theta = np.asarray(theta, float)[order]
+        self.name = name
+
+    def at(self, x):
+        """Angle at stations x (linear between the boundary's points)."""
+        return np.interp(x, self.x, self.theta)
+
+
+def _angles(body, points):
+    c = body.center_at(points[:, 0])
+    return np.arctan2(points[:, 2] - c[:, 1], points[:, 1] - c[:, 0])
+
+
+def boundary_from_points(body, points, name=""):
+    """A Boundary through points lying on ``body`` (NaN rows skipped)."""
+    ok = np.all(np.isfinite(points), axis=1)
+    return Boundary(points[ok, 0], _angles(body, points[ok]), name)
+
+
+def bounding_curve(x, regions, x_nose, x_end):
+    """theta_b at stations x from region boundaries (each a Boundary), 0 at both ends."""
+    xs, ths = [x_nose], [0.0]
+    for reg in sorted(regions, key=lambda r: r.x[0]):
+        xs.extend(reg.x)
+        ths.extend(reg.theta)
+    xs.append(x_end)
+    ths.append(0.0)
+    xs, ths = np.asarray(xs), np.asarray(ths)
+    order = np.argsort(xs, kind="stable")
+    return np.interp(x, xs[order], ths[order])
+
+
+def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=10):
+    """Upper and lower fuselage networks split by theta_b (TM-4607).
+
+    Parameters
+    ----------
+    body : CircularBody
+    upper_regions, lower_regions : list of Boundary
+        Upper and lower intersection (or fillet start) curves of the canard, wing and tail.
+    fins : list of Boundary
+        Outboard intersection curves of fins standing on the body (the upper surface starts
+        there instead of at pi/2).
+    n_upper, n_lower : int
+        Points per cross-section of each network.
+
+    Returns
+    -------
+    dict with "body upper" and "body lower" networks (n_stations, n_points, 3)
+    """
+    xg = body.x_global
+    x_nose, x_end = float(xg[0]), float(xg[-1])
+    xu = np.unique(np.concatenate([xg] + [r.x for r in upper_regions] + [f.x for f in fins]))
+    xl = np.unique(np.concatenate([xg] + [r.x for r in lower_regions]))
+    th_u = bounding_curve(xu, upper_regions, x_nose, x_end)
+    th_l = bounding_curve(xl, lower_regions, x_nose, x_end)
+    top = np.full(xu.size, 0.5 * np.pi)
+    for fin in fins:
+        inside = (xu >= fin.x[0]) & (xu <= fin.x[-1])
+        top[inside] = np.minimum(top[inside], fin.at(xu[inside]))
+    t_u = np.linspace(0.0, 1.0, int(n_upper))
+    t_l = np.linspace(0.0, 1.0, int(n_lower))
+    up = body.point(xu[:, None], top[:, None] + t_u[None, :] * (th_u - top)[:, None])
+    lo = body.point(xl[:, None], -0.5 * np.pi + t_l[None, :] * (th_l + 0.5 * np.pi)[:, None])
+
+    def radial(p):
+        c = body.center_at(p[..., 0])
+        r = np.zeros_like(p)
+        r[..., 1], r[..., 2] = p[..., 1] - c[..., 0], p[..., 2] - c[..., 1]
+        return r
+
+    return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
+
+
+def seam_gap(points, net):
+    """Largest distance from ``points`` (k, 3) to the nearest boundary point of ``net``."""
+    edges = np.concatenate([net[0], net[-1], net[:, 0], net[:, -1]])
+    ok = np.all(np.isfinite(points), axis=1)
+    if not ok.any():
+        return 0.0
+    d = np.linalg.norm(points[ok, None, :] - edges[None, :, :], axis=-1).min(axis=1)
+    return float(d.max())
