@@ -254,6 +254,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
     first_met = None
     history = []
     hints = None
+    removed = 0.0  # the first body is the original one
     for it in range(1, max_iterations + 1):
         parts = make_fillets(current, hints)
         x, only, a_f = fillet_added_area(current, *parts[2:], *parts[:2], reference_body=body)
@@ -267,15 +268,19 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
         if met.all():
             return Compensation(current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi),
                                 current.radius_at(x), residual, first_met, it, parts)
-        history.append(a_f)
+        # Per-station secant on F(t) = G(t) - t, G the added area of the body built with t
+        # removed; the paper's plain substitution t = G(t) on the first step and wherever the
+        # secant is undefined.
+        history.append((removed, a_f))
         target = a_f
-        if len(history) >= 3:  # Aitken's delta-squared on each station's area
-            a2, a1, a0_ = history[-1], history[-2], history[-3]
-            denom = a2 - 2 * a1 + a0_
+        if len(history) >= 2:
+            (t0, g0), (t1, g1) = history[-2], history[-1]
+            f0, f1 = g0 - t0, g1 - t1
             with np.errstate(divide="ignore", invalid="ignore"):
-                acc = a2 - (a2 - a1) ** 2 / denom
-            ok = np.isfinite(acc) & (np.abs(denom) > 1e-14 * np.maximum(np.abs(a2), 1e-300))
-            target = np.where(ok, acc, a2)
+                sec = t1 - f1 * (t1 - t0) / (f1 - f0)
+            ok = np.isfinite(sec) & (np.abs(f1 - f0) > 1e-15 * np.maximum(np.abs(g1), 1e-300))
+            target = np.where(ok, sec, a_f)
+        removed = target
         current = reduced_body(body, x, target)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
         hints = (parts[0].u, parts[1].u) if np.all(target >= 0) else None

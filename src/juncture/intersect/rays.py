@@ -38,7 +38,7 @@ def polyline_points(lines, u):
     lines = np.asarray(lines, float)
     u = np.asarray(u, float)
     m, n = lines.shape[:2]
-    k = np.clip(np.floor(u).astype(int), 0, n - 2)
+    k = np.minimum(np.maximum(np.floor(u).astype(int), 0), n - 2)
     lam = (u - k)[..., None]
     rows = np.arange(m).reshape((m,) + (1,) * (u.ndim - 1))
     a, b = lines[rows, k], lines[rows, k + 1]

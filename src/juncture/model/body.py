@@ -79,7 +79,9 @@ class _Piecewise:
 
     def __call__(self, xq, nu=0):
         xq = np.asarray(xq, dtype=float)
-        k = np.clip(np.searchsorted(self.breaks, xq, side="right") - 1, 0, self.breaks.size - 1)
+        # np.minimum/maximum: np.clip's overhead shows in the root finders' inner loops.
+        k = np.minimum(np.maximum(np.searchsorted(self.breaks, xq, side="right") - 1, 0),
+                       self.breaks.size - 1)
         t = (xq - self.breaks[k])[..., None]
         c3, c2, c1, c0 = self.coefs[:, k]
         if nu == 0:
@@ -159,20 +161,7 @@ class CircularBody:
             object.__setattr__(self, field, value)
         interp = _Piecewise(x, np.stack([r, c], axis=1), bounds, self.axial)
         object.__setattr__(self, "_interp", interp)
-        # |grad e| <= 1 + |r'| + |c'| for e = |p_yz - c(x)| - r(x); slopes sampled densely on
-        # every piece (the derivative of a cubic piece is a quadratic: 9 samples are ample,
-        # and the 1.25 margin covers what falls between them).
-        t = np.linspace(0.0, 1.0, 9)
-        lo = interp.breaks
-        hi = np.append(lo[1:], x[-1])
-        xs = lo[:, None] + t * (hi - lo)[:, None]
-        piece = np.abs(interp(xs, 1)).max(axis=1).sum(axis=-1)  # (n_pieces,) |r'| + |c'|
-        # Sparse table for range maxima over pieces: level k holds max(piece[i : i + 2^k]).
-        levels = [piece]
-        while (1 << len(levels)) <= piece.size:
-            prev, w = levels[-1], 1 << (len(levels) - 1)
-            levels.append(np.maximum(prev[:-w], prev[w:]))
-        object.__setattr__(self, "_lipschitz", (float(1.25 * (1.0 + piece.max())), levels))
+
 
     @property
     def x_global(self):
@@ -213,10 +202,31 @@ class CircularBody:
         c = self.center_at(x)
         return np.stack([x, c[..., 0] + r * np.cos(theta), c[..., 1] + r * np.sin(theta)], -1)
 
+    def _slope_table(self):
+        """(global bound, sparse range-max levels) of |r'| + |c'|, built on first use."""
+        if self._lipschitz is None:
+            interp, x = self._interp, self.x
+            # |grad e| <= 1 + |r'| + |c'| for e = |p_yz - c(x)| - r(x); slopes sampled densely
+            # on every piece (the derivative of a cubic piece is a quadratic: 9 samples are
+            # ample, and the 1.25 margin covers what falls between them).
+            t = np.linspace(0.0, 1.0, 9)
+            lo = interp.breaks
+            hi = np.append(lo[1:], x[-1])
+            xs = lo[:, None] + t * (hi - lo)[:, None]
+            piece = np.abs(interp(xs, 1)).max(axis=1).sum(axis=-1)  # (n_pieces,)
+            # Sparse table for range maxima: level k holds max(piece[i : i + 2^k]).
+            levels = [piece]
+            while (1 << len(levels)) <= piece.size:
+                prev, w = levels[-1], 1 << (len(levels) - 1)
+                levels.append(np.maximum(prev[:-w], prev[w:]))
+            object.__setattr__(self, "_lipschitz",
+                               (float(1.25 * (1.0 + piece.max())), levels))
+        return self._lipschitz
+
     @property
     def error_lipschitz(self):
         """A bound on |d radial_error / d length| along any straight line [-]."""
-        return self._lipschitz[0]
+        return self._slope_table()[0]
 
     def error_lipschitz_between(self, pa, pb):
         """Local bound on |d radial_error / d length| on the segments pa -> pb, vectorised.
@@ -232,7 +242,7 @@ class CircularBody:
                      brk.size - 1)
         ib = np.clip(np.searchsorted(brk, np.maximum(xa, xb), side="right") - 1, 0,
                      brk.size - 1)
-        levels = self._lipschitz[1]
+        levels = self._slope_table()[1]
         span = ib - ia + 1
         k = np.minimum(np.floor(np.log2(span)).astype(int), len(levels) - 1)
         best = np.zeros(np.shape(ia))
