@@ -244,11 +244,12 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
     Notes
     -----
     Each iteration removes an area t from the original body (not from the previous iterate),
-    so the problem is the fixed point t = A_fillet(body(t)) on the vector of station areas:
-    the paper's iteration, accelerated by Aitken's delta-squared step per station once three
-    iterates exist (a per-station secant was tried and converged no faster: the stations
-    move a little in x as the body shrinks, which couples them). The intersections are
-    warm-started from the previous iterate while the body only shrinks.
+    so the problem is the fixed point t = A(body(t)) on the vector of station areas. The first
+    step is the paper's substitution; after it a secant step per station solves
+    A(body(t)) - t = 0 (the uncovered wing root couples neighbouring stations: plain or
+    Aitken-accelerated substitution then oscillates, 29 iterations on the bundled transport
+    against 8). The intersections are warm-started from the previous iterate while the body
+    only shrinks.
     """
     current = body
     first_met = None
