@@ -99,8 +99,14 @@ def _cmd_convert(args):
 
 
 def _cmd_demo(args):
-    from . import plots
-    from .io import write
+    """The main job on the bundled transport: every intersection, a cubic fillet with the
+    fuselage re-designed at fixed area, every output format, figures, wave drag, report."""
+    import json
+
+    from .analysis import plot_area_distribution, wavedrag
+    from .complete import complete
+    from .io import atomic_output
+    from .massprops import configuration_mass_properties, format_table
 
     out = Path(args.output)
     out.mkdir(parents=True, exist_ok=True)
@@ -110,19 +116,31 @@ def _cmd_demo(args):
         print(f"warning: {w}", file=sys.stderr)
     print(f"read {deck.name}: {cfg.title}")
     print("\n".join("  " + s for s in _describe(cfg)[1:]))
-    written = []
-    for name in ("components.wgs", "components.p3d", "components.stl", "components.hess"):
-        try:
-            write(cfg, out / name)
-        except JunctureError as exc:  # a format whose writer is not available
-            print(f"skipped {name}: {exc}", file=sys.stderr)
-            continue
-        written.append(name)
-    for name, fig in (("planform.png", plots.plot_planform(cfg)),
-                      ("side.png", plots.plot_side(cfg)),
-                      ("views.png", plots.plot_views(cfg))):
-        plots.save(fig, out / name)
-        written.append(name)
+    sharp = complete(cfg, "cubic", False)
+    geo = complete(cfg, "cubic", True)
+    _print_completion(cfg, geo, "cubic")
+    summary_args = argparse.Namespace(fillet="cubic", keep_area=True)
+    written = _write_outputs(cfg, geo, out, ("wgs", "p3d", "hess", "stl", "vtk", "step", "igs"),
+                             "cubic", True, summary_args)
+    cases = {"original": wavedrag(cfg), "cubic fillet": wavedrag(cfg, geometry=sharp),
+             "cubic fillet, fixed area": wavedrag(cfg, geometry=geo)}
+    plot_area_distribution(cases, out / "wavedrag_areas.png", title=cfg.title)
+    with atomic_output(out / "wavedrag.json") as fh:
+        json.dump({k: {f: v[f] for f in ("mach", "D_over_q", "CD", "method")}
+                   for k, v in cases.items()}, fh, indent=1)
+    written += ["wavedrag_areas.png", "wavedrag.json"]
+    base = cases["original"]["D_over_q"]
+    for label, r in cases.items():
+        print(f"  wave drag {label:<26} D/q {r['D_over_q']:10.5g}  "
+              f"({100 * (r['D_over_q'] - base) / base:+.3f} %)")
+    total, parts = configuration_mass_properties(geo.configuration)
+    with atomic_output(out / "massprops.txt") as fh:
+        fh.write(format_table(total, parts) + "\n")
+    written.append("massprops.txt")
+    try:
+        written.append(_report(cfg, geo, out, "cubic", True, "juncture demo"))
+    except ImportError:  # the report module is optional in this build
+        pass
     print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
     return 0
 
@@ -138,10 +156,38 @@ def _summary(geo, cfg, args):
         "stations": st, "log": list(geo.log)}, indent=1)
 
 
-def _cmd_complete(args):
+def _write_outputs(cfg, geo, out, formats, fillet, keep_area, summary_args):
+    """Networks in every format asked, summary.json and the figures; returns names written."""
     from . import plots, plots_juncture
-    from .complete import complete
+    from .errors import MissingDependencyError
     from .io import atomic_output, write
+
+    written = []
+    for fmt in formats:
+        name = f"geometry.{fmt}"
+        try:
+            write(geo, out / name)
+        except MissingDependencyError as exc:
+            print(f"skipped {name}: {exc}", file=sys.stderr)
+            continue
+        written.append(name)
+    with atomic_output(out / "summary.json") as fh:
+        fh.write(_summary(geo, cfg, summary_args))
+    written.append("summary.json")
+    figs = [("views.png", plots.plot_views(geo)),
+            ("intersection.png", plots_juncture.plot_gap_and_intersection(cfg, geo)),
+            ("lower_intersection.png", plots_juncture.plot_lower_intersection(cfg, geo))]
+    if fillet is not None:
+        figs += [("fillet_sections.png", plots_juncture.plot_fillet_sections(cfg, geo)),
+                 ("areas.png", plots_juncture.plot_station_areas(geo))]
+    for name, fig in figs:
+        plots.save(fig, out / name)
+        written.append(name)
+    return written
+
+
+def _cmd_complete(args):
+    from .complete import complete
 
     cfg, warns = _read_with_warnings(args.deck)
     for w in warns:
@@ -155,32 +201,48 @@ def _cmd_complete(args):
     geo = complete(cfg, fillet, args.keep_area, **opts)
     out = Path(args.output)
     out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for fmt in args.format:
-        name = f"geometry.{fmt}"
-        write(geo, out / name)
-        written.append(name)
-    with atomic_output(out / "summary.json") as fh:
-        fh.write(_summary(geo, cfg, args))
-    written.append("summary.json")
-    figs = [("views.png", plots.plot_views(geo)),
-            ("intersection.png", plots_juncture.plot_gap_and_intersection(cfg, geo)),
-            ("lower_intersection.png", plots_juncture.plot_lower_intersection(cfg, geo))]
-    if fillet is not None:
-        figs += [("fillet_sections.png", plots_juncture.plot_fillet_sections(cfg, geo)),
-                 ("areas.png", plots_juncture.plot_station_areas(geo))]
-    for name, fig in figs:
-        plots.save(fig, out / name)
-        written.append(name)
+    written = _write_outputs(cfg, geo, out, args.format, fillet, args.keep_area, args)
+    _print_completion(cfg, geo, fillet)
+    if args.report:
+        written.append(_report(cfg, geo, out, fillet, args.keep_area,
+                               "juncture " + " ".join(sys.argv[1:])))
+    print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
+    return 0
+
+
+def _print_completion(cfg, geo, fillet):
     st = geo.stations
-    print(f"{cfg.title}: {len(geo.networks)} networks; fillet {fillet}; "
-          f"{len(st['x'])} stations")
+    pairs = [s for s in geo.log if s.startswith("touching pairs:")]
+    print(f"{cfg.title}: {len(geo.networks)} networks, {len(geo.intersections)} intersection "
+          f"lines; fillet {fillet}; {len(st['x'])} fillet stations")
+    if pairs:
+        print(f"  {pairs[0]}")
+    gaps = [float(s.rsplit("max gap ", 1)[1]) for s in geo.log if s.startswith("seam")]
+    if gaps:
+        print(f"  {len(gaps)} seams between networks, largest gap {max(gaps):.3g}")
     if fillet is not None:
         print(f"  added area up to {st['area_fillet'].max():.4g}; radius reduced by up to "
               f"{(st['radius_original'] - st['radius_new']).max():.4g}; worst area residual "
               f"{st['residual'].max():.3g}")
-    print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
-    return 0
+
+
+def _report(cfg, geo, out, fillet, keep_area, command):
+    """Write report.html with the wave drag of each case and the mass properties."""
+    from .analysis import wavedrag
+    from .complete import complete
+    from .massprops import configuration_mass_properties
+    from .report import write_report
+
+    cases = {"original": wavedrag(cfg)}
+    if fillet is not None:
+        cases[f"{fillet} fillet"] = wavedrag(cfg, geometry=geo if not keep_area else
+                                             complete(cfg, fillet, False))
+        if keep_area:
+            cases[f"{fillet} fillet, fixed area"] = wavedrag(cfg, geometry=geo)
+    mass = configuration_mass_properties(geo.configuration or cfg)
+    write_report(out / "report.html", cfg, geo, wavedrag=cases, massprops=mass,
+                 command=command)
+    return "report.html"
 
 
 def _cmd_blend(args):
@@ -307,6 +369,8 @@ def _build_parser():
     s.add_argument("--radius", type=float, help="circular fillet radius rho")
     s.add_argument("--remedy", choices=("z-constraint", "parabolas"),
                    help="low-wing dip remedy for the cubic fillet")
+    s.add_argument("--report", action="store_true",
+                   help="also write report.html: inputs, tables, figures, wave drag, mass")
     s.set_defaults(func=_cmd_complete)
 
     s = sub.add_parser("wavedrag", help="area distributions and supersonic wave drag")
