@@ -33,12 +33,24 @@ def test_convert_deck_to_lawgs_and_back(tmp_path, capsys):
     assert geo.symmetry["wing upper"] == "xz" and "fin 3 outboard" not in geo.symmetry
 
 
-def test_demo_writes_every_output(tmp_path, capsys):
+def test_demo_runs_the_whole_pipeline(tmp_path, capsys):
+    import json
+
     assert main(["demo", "-o", str(tmp_path)]) == 0
-    for name in ("components.wgs", "components.p3d", "components.stl", "planform.png",
-                 "side.png", "views.png"):
+    for name in ("geometry.wgs", "geometry.p3d", "geometry.hess", "geometry.stl",
+                 "geometry.vtk", "summary.json", "views.png", "intersection.png",
+                 "fillet_sections.png", "areas.png", "wavedrag_areas.png", "wavedrag.json",
+                 "massprops.txt", "report.html"):
         assert (tmp_path / name).stat().st_size > 0, name
-    assert (tmp_path / "planform.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert (tmp_path / "views.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    drag = json.loads((tmp_path / "wavedrag.json").read_text())
+    base = drag["original"]["D_over_q"]
+    assert drag["cubic fillet"]["D_over_q"] > base
+    assert abs(drag["cubic fillet, fixed area"]["D_over_q"] - base) < 1e-3 * base
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert len(summary["intersections"]) == 14  # every touching pair, both surfaces
+    out = capsys.readouterr().out
+    assert "touching pairs:" in out and "largest gap" in out
 
 
 def _bad(tmp_path, lines):
