@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .networks import orient
+from .networks import orient, radial_outward
 
 __all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "seam_gap"]
 
@@ -90,13 +90,7 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     t_l = np.linspace(0.0, 1.0, int(n_lower))
     up = body.point(xu[:, None], top[:, None] + t_u[None, :] * (th_u - top)[:, None])
     lo = body.point(xl[:, None], -0.5 * np.pi + t_l[None, :] * (th_l + 0.5 * np.pi)[:, None])
-
-    def radial(p):
-        c = body.center_at(p[..., 0])
-        r = np.zeros_like(p)
-        r[..., 1], r[..., 2] = p[..., 1] - c[..., 0], p[..., 2] - c[..., 1]
-        return r
-
+    radial = radial_outward(body)
     return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
 
 

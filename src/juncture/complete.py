@@ -23,7 +23,7 @@ from .fillet.cubic import FilletLines, cubic_fillet
 from .geometry import Geometry
 from .intersect import intersect_body_both
 from .model import CircularBody, Configuration
-from .networks import arc_points, juncture_networks, orient, split_counts
+from .networks import arc_points, juncture_networks, orient, radial_outward, split_counts
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 
@@ -186,13 +186,7 @@ def _single_network(wing, body, upper, lower, n_half):
     ahead = ring(xg[xg < xu[0]], lower.theta_start[0], upper.theta_start[0])
     behind = ring(xg[xg > xu[-1]], lower.theta_start[-1], upper.theta_start[-1])
 
-    def radial(p):
-        c = body.center_at(p[..., 0])
-        r = np.zeros_like(p)
-        r[..., 1], r[..., 2] = p[..., 1] - c[..., 0], p[..., 2] - c[..., 1]
-        return r
-
-    single = orient(np.concatenate([ahead, region, behind]), radial)
+    single = orient(np.concatenate([ahead, region, behind]), radial_outward(body))
     out = {"body": single, "wing upper": nets["wing upper"], "wing lower": nets["wing lower"]}
     return out, [s for s in seams if s["a"].startswith("wing")]
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["split_counts", "arc_points", "orient", "juncture_networks"]
+__all__ = ["split_counts", "arc_points", "orient", "radial_outward", "juncture_networks"]
 
 
 def split_counts(theta_w, n_points):
@@ -53,7 +53,8 @@ def orient(net, outward):
     return net if np.sum(n * ref) >= 0 else net[::-1]
 
 
-def _radial(body):
+def radial_outward(body):
+    """``f(points (..., 3)) -> (..., 3)``: the outward radial direction of a circular body."""
     def out(p):
         c = body.center_at(p[..., 0])
         r = np.zeros_like(p)
@@ -149,8 +150,8 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None):
     wu, wl = ("wing upper", "wing lower") if blocks == 6 else (names_u, names_l)
     seam(wu, wl, "leading-edge lofting line", wing_u[0], wing_l[0])
     seam(wu, wl, "trailing-edge lofting line", wing_u[-1], wing_l[-1])
-    outward = {"body forward": _radial(body), "body aft": _radial(body),
-               "body upper": _radial(body), "body lower": _radial(body),
+    outward = {"body forward": radial_outward(body), "body aft": radial_outward(body),
+               "body upper": radial_outward(body), "body lower": radial_outward(body),
                "wing-body upper": np.array([0.0, 0.0, 1.0]),
                "wing upper": np.array([0.0, 0.0, 1.0]),
                "wing-body lower": np.array([0.0, 0.0, -1.0]),
