@@ -110,3 +110,34 @@ def test_whole_configuration_splits_the_body_by_theta_b(fillet):
     first = up[:, 0] if up[0, 0, 2] > up[0, -1, 2] else up[:, -1]
     for p in fin:
         assert np.min(np.linalg.norm(first - p, axis=1)) < 1e-9
+
+
+def squashed(cfg):
+    """The example with its fuselage as arbitrary (elliptic) half-sections (deck J2 = +1)."""
+    from juncture.model import ArbitraryBody
+
+    b = cfg["body"]
+    th = np.linspace(-np.pi / 2, np.pi / 2, 13)
+    secs = [np.stack([1.15 * r * np.cos(th), zc + 0.9 * r * np.sin(th)], 1)
+            for r, zc in zip(b.radius, b.camber)]
+    return cfg.with_component(ArbitraryBody("body", b.x, secs, segments=b.segments))
+
+
+@pytest.mark.parametrize("blocks", [None, 4, 6])
+def test_arbitrary_section_fuselage(blocks):
+    cfg = squashed(example())
+    body = cfg["body"]
+    geo = jc.complete(cfg, None, blocks=blocks)
+    for name, pts in geo.intersections.items():
+        if name.split("/")[1].startswith("body"):
+            assert np.abs(body.signed_distance(pts)).max() < 1e-9 * body.length, name
+    assert max(seam_gaps(geo)) < 1e-12
+    # Network points on the fuselage lie on it (arc-length parameterisation, TM-4607).
+    for name in geo.networks:
+        if name.startswith("body"):
+            assert np.abs(body.signed_distance(geo.networks[name])).max() < 1e-9
+
+
+def test_fillets_need_a_circular_fuselage():
+    with pytest.raises(jc.GeometryError, match="fillets \\(TM-4406\\) need a circular"):
+        jc.complete(squashed(example()), "cubic")

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .networks import orient, radial_outward
+from .networks import body_range, orient, radial_outward
 
 __all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "seam_gap"]
 
@@ -34,25 +34,23 @@ class Boundary:
         return np.interp(x, self.x, self.theta)
 
 
-def _angles(body, points):
-    c = body.center_at(points[:, 0])
-    return np.arctan2(points[:, 2] - c[:, 1], points[:, 1] - c[:, 0])
-
-
 def boundary_from_points(body, points, name=""):
     """A Boundary through points lying on ``body`` (NaN rows skipped)."""
+    from .intersect.body import _body_angle
+
     ok = np.all(np.isfinite(points), axis=1)
-    return Boundary(points[ok, 0], _angles(body, points[ok]), name)
+    return Boundary(points[ok, 0], _body_angle(body, points[ok]), name)
 
 
-def bounding_curve(x, regions, x_nose, x_end):
-    """theta_b at stations x from region boundaries (each a Boundary), 0 at both ends."""
-    xs, ths = [x_nose], [0.0]
+def bounding_curve(x, regions, x_nose, x_end, side=0.0):
+    """theta_b at stations x from region boundaries (each a Boundary), ``side`` at both ends
+    (the horizontal: theta = 0, or arc length 0.5 on an arbitrary-section body)."""
+    xs, ths = [x_nose], [side]
     for reg in sorted(regions, key=lambda r: r.x[0]):
         xs.extend(reg.x)
         ths.extend(reg.theta)
     xs.append(x_end)
-    ths.append(0.0)
+    ths.append(side)
     xs, ths = np.asarray(xs), np.asarray(ths)
     order = np.argsort(xs, kind="stable")
     return np.interp(x, xs[order], ths[order])
@@ -80,16 +78,17 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     x_nose, x_end = float(xg[0]), float(xg[-1])
     xu = np.unique(np.concatenate([xg] + [r.x for r in upper_regions] + [f.x for f in fins]))
     xl = np.unique(np.concatenate([xg] + [r.x for r in lower_regions]))
-    th_u = bounding_curve(xu, upper_regions, x_nose, x_end)
-    th_l = bounding_curve(xl, lower_regions, x_nose, x_end)
-    top = np.full(xu.size, 0.5 * np.pi)
+    bottom, top_value, side = body_range(body)
+    th_u = bounding_curve(xu, upper_regions, x_nose, x_end, side)
+    th_l = bounding_curve(xl, lower_regions, x_nose, x_end, side)
+    top = np.full(xu.size, top_value)
     for fin in fins:
         inside = (xu >= fin.x[0]) & (xu <= fin.x[-1])
         top[inside] = np.minimum(top[inside], fin.at(xu[inside]))
     t_u = np.linspace(0.0, 1.0, int(n_upper))
     t_l = np.linspace(0.0, 1.0, int(n_lower))
     up = body.point(xu[:, None], top[:, None] + t_u[None, :] * (th_u - top)[:, None])
-    lo = body.point(xl[:, None], -0.5 * np.pi + t_l[None, :] * (th_l + 0.5 * np.pi)[:, None])
+    lo = body.point(xl[:, None], bottom + t_l[None, :] * (th_l - bottom)[:, None])
     radial = radial_outward(body)
     return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
 

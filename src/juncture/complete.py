@@ -23,7 +23,14 @@ from .fillet.cubic import FilletLines, cubic_fillet
 from .geometry import Geometry
 from .intersect import intersect_body_both
 from .model import CircularBody, Configuration
-from .networks import arc_points, juncture_networks, orient, radial_outward, split_counts
+from .networks import (
+    arc_points,
+    body_range,
+    juncture_networks,
+    orient,
+    radial_outward,
+    split_counts,
+)
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 
@@ -108,7 +115,7 @@ def _sharp_with_misses(body, inter, upper_inter):
     if inter.found.all():
         return sharp_fillet(inter)
     x = np.where(inter.found, inter.points[:, 0], upper_inter.points[:, 0])
-    theta = np.where(inter.found, inter.theta, -0.5 * np.pi)
+    theta = np.where(inter.found, inter.theta, body_range(body)[0])
     pts = np.where(inter.found[:, None], inter.points, body.point(x, theta))
     u = np.where(inter.found, inter.u, 0.0)
     m = len(pts)
@@ -169,19 +176,20 @@ def _reinterpolated_lower(body, upper, lower):
 def _single_network(wing, body, upper, lower, n_half):
     """Fuselage as one network (fig 5) plus the two wing networks (6-block style)."""
     nets, seams = juncture_networks(wing, body, upper, lower, 6, n_half)
-    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half)
+    b_lo, b_hi, _ = body_range(body)
+    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half, b_lo, b_hi)
     xu = upper.start[:, 0]
-    bottom, top = np.full(xu.size, -0.5 * np.pi), np.full(xu.size, 0.5 * np.pi)
+    bottom, top = np.full(xu.size, b_lo), np.full(xu.size, b_hi)
     region = np.concatenate([arc_points(body, xu, bottom, lower.theta_start, n_below),
                              arc_points(body, xu, upper.theta_start, top, n_above)], axis=1)
     xg = body.x_global
 
     def ring(xs, lo, hi):
         xs = np.asarray(xs, float)
-        return np.concatenate([arc_points(body, xs, np.full(xs.size, -0.5 * np.pi),
+        return np.concatenate([arc_points(body, xs, np.full(xs.size, b_lo),
                                           np.full(xs.size, lo), n_below),
                                arc_points(body, xs, np.full(xs.size, hi),
-                                          np.full(xs.size, 0.5 * np.pi), n_above)], axis=1)
+                                          np.full(xs.size, b_hi), n_above)], axis=1)
 
     ahead = ring(xg[xg < xu[0]], lower.theta_start[0], upper.theta_start[0])
     behind = ring(xg[xg > xu[-1]], lower.theta_start[-1], upper.theta_start[-1])
@@ -317,9 +325,10 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         opts = CompleteOptions(**fields)
     wing = _pick(cfg, opts.wing, "wing")
     body0 = _pick(cfg, opts.body, "fuselage")
-    if not isinstance(body0, CircularBody):
-        raise GeometryError("the wing-body juncture of TM-4406 needs a circular fuselage; "
-                            f"{body0.name} is a {type(body0).__name__}", body0.name)
+    if not isinstance(body0, CircularBody) and fillet is not None:
+        raise GeometryError("fillets (TM-4406) need a circular fuselage; this one has "
+                            "arbitrary sections: use fillet=None (sharp intersections, "
+                            "TM-4607 eq 8)", body0.name)
     log = [f"complete: fillet={fillet}, keep_area={keep_area}, {opts}"]
     make = _fillet_maker(wing, fillet, opts, body0)
     sides = 2 if (wing.mirrored and cfg.symmetric) else 1
@@ -345,15 +354,16 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
             a_f = sides * a_f
         else:
             x, a_f = fu.start[:, 0], np.zeros(len(fu.start))
-        a0 = np.pi * body.radius_at(x) ** 2
+        a0 = body.area_at(x)
+        r_eq = np.sqrt(a0 / np.pi)  # the radius, or the equivalent radius of an arbitrary body
         stations = {"x": x, "area_original": a0, "area_fillet": a_f,
                     "area_fillet_only": a_f, "area_body": a0,
-                    "radius_original": body.radius_at(x), "radius_new": body.radius_at(x),
+                    "radius_original": r_eq, "radius_new": r_eq,
                     "residual": np.abs(a_f) / np.where(a0 > 0, a0, 1.0),
                     "iterations": np.zeros(len(x))}
     for part in (iu, il, fu, fl):
         log.extend(part.log)
-    n_half = (body.points_per_section or (19,))[0]
+    n_half = (getattr(body, "points_per_section", None) or (19,))[0]
     completed = cfg.with_component(body) if body is not body0 else cfg
     other_nets, other_inters, attached = _other_components(completed, wing, body, opts, log)
     layout = opts.blocks

@@ -19,16 +19,30 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["split_counts", "arc_points", "orient", "radial_outward", "juncture_networks"]
+__all__ = ["body_range", "split_counts", "arc_points", "orient", "radial_outward",
+           "juncture_networks"]
 
 
-def split_counts(theta_w, n_points):
+def body_range(body):
+    """(bottom, top, side) values of a body's section parameter.
+
+    A circular body is parameterised by theta (-pi/2, pi/2, 0 on the horizontal), an
+    arbitrary-section body by normalised arc length (0 bottom, 1 top, 0.5 half-way).
+    """
+    from .model import CircularBody
+
+    if isinstance(body, CircularBody):
+        return -0.5 * np.pi, 0.5 * np.pi, 0.0
+    return 0.0, 1.0, 0.5
+
+
+def split_counts(theta_w, n_points, bottom=-0.5 * np.pi, top=0.5 * np.pi):
     """Points below / above theta_w for a half-section of ``n_points`` (TM-4406 fig 5).
 
-    The share below is the arc from -pi/2 to theta_w over pi; both parts get at least 2 points
-    and share the point at theta_w.
+    The share below is the arc from the bottom to theta_w over the whole half-section; both
+    parts get at least 2 points and share the point at theta_w.
     """
-    frac = (theta_w + 0.5 * np.pi) / np.pi
+    frac = (theta_w - bottom) / (top - bottom)
     n_below = int(np.clip(round(frac * (n_points - 1)) + 1, 2, n_points - 1))
     return n_below, n_points - n_below + 1
 
@@ -99,9 +113,9 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None):
         raise GeometryError(f"blocks must be 4 or 6, found {blocks!r}")
     u_end = np.concatenate([upper.u_end, lower.u_end])
     k_first = min(max(int(np.floor(np.nanmax(u_end))) + 1, 1), wing.n_sections - 1)
-    n_half = n_body_points or (body.points_per_section or (19,))[0]
-    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half)
-    top, bottom = 0.5 * np.pi, -0.5 * np.pi
+    n_half = n_body_points or (getattr(body, "points_per_section", None) or (19,))[0]
+    bottom, top, _ = body_range(body)
+    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half, bottom, top)
     xu, xl = upper.start[:, 0], lower.start[:, 0]
     arc_u = arc_points(body, xu, np.full(xu.size, top), upper.theta_start, n_above)
     arc_l = arc_points(body, xl, np.full(xl.size, bottom), lower.theta_start, n_below)

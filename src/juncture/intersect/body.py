@@ -77,10 +77,7 @@ def _body_angle(body, pts):
     if isinstance(body, CircularBody):
         c = body.center_at(pts[:, 0])
         return np.arctan2(pts[:, 2] - c[:, 1], pts[:, 1] - c[:, 0])
-    # Arbitrary body: normalised arc length of the nearest point of the interpolated section.
-    sec = body._sections_at(pts[:, 0])  # (m, k, 2)
-    d = np.hypot(sec[..., 0] - np.abs(pts[:, 1:2]), sec[..., 1] - pts[:, 2:3])
-    return np.argmin(d, axis=1) / (sec.shape[1] - 1)
+    return body.parameter_of(pts)  # arbitrary body: normalised arc length, 0 bottom, 1 top
 
 
 def _u_axis(wing, body, lines):

@@ -431,6 +431,32 @@ class ArbitraryBody:
             np.take_along_axis(sec, (j + 1)[..., None, None], -2)[..., 0, :] * t
         return np.concatenate([x[..., None], yz], axis=-1)
 
+    def center_at(self, x):
+        """(..., 2): y = 0 and the mean height of the interpolated section (a reference centre
+        for orientation; not a geometric centroid)."""
+        sec = self._sections_at(x)
+        zc = sec[..., 1].mean(axis=-1)
+        return np.stack([np.zeros_like(zc), zc], axis=-1)
+
+    def parameter_of(self, points):
+        """Normalised arc length s (0 bottom, 1 top) of points on the surface: the inverse of
+        :meth:`point` (the nearest point of the interpolated section, projected).
+
+        points (..., 3) -> (...). Points off the surface get the s of their nearest point.
+        """
+        p = np.asarray(points, float)
+        shape = p.shape[:-1]
+        p = p.reshape(-1, 3)
+        sec = self._sections_at(p[:, 0])  # (q, m, 2)
+        a, d = sec[:, :-1], np.diff(sec, axis=1)
+        q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
+        len2 = np.maximum((d * d).sum(-1), 1e-300)
+        t = np.clip(((q - a) * d).sum(-1) / len2, 0.0, 1.0)
+        dist2 = ((q - a - t[..., None] * d) ** 2).sum(-1)
+        j = np.argmin(dist2, axis=1)
+        tj = t[np.arange(len(j)), j]
+        return ((j + tj) / (self.resample - 1)).reshape(shape)
+
     def area_at(self, x):
         """Cross-sectional area of the whole (both halves) section at x [deck length^2]."""
         sec = self._sections_at(x)
