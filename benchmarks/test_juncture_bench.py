@@ -75,3 +75,21 @@ def test_occ_section(benchmark, cfg):
         np.abs(body.radial_error(occ)).max())
     benchmark.extra_info["juncture_to_occ_curve_median"] = float(np.median(d))
     benchmark.extra_info["juncture_to_occ_curve_max"] = float(d.max())
+
+
+@pytest.fixture(scope="module")
+def transport():
+    import warnings
+
+    from juncture.cli import bundled_example
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.read(bundled_example())
+
+
+@pytest.mark.parametrize("fillet, keep", [(None, False), ("cubic", True)])
+def test_complete_whole_transport(benchmark, transport, fillet, keep):
+    """Issue 4: every intersection of the bundled transport (7 touching pairs)."""
+    geo = benchmark(jc.complete, transport, fillet, keep)
+    benchmark.extra_info["intersections"] = len(geo.intersections)

@@ -210,8 +210,13 @@ def _other_components(cfg, wing, body, opts, log):
         if comp.name != wing.name and comp.kind in ("canard", "tail", "fin", "pylon"):
             work = work.with_component(interpolated(comp, opts.empennage_sections))
     found = find_intersections(work, explicit=opts.pairs, skip={(wing.name, body.name)})
-    inters, by_comp, pylons, attached = {}, {}, {}, []
+    inters, by_comp, pylons, attached, traces = {}, {}, {}, [], []
     for pair, (up, lo) in found.items():
+        if pair.b == wing.name and pair.role in ("upper", "lower"):
+            # TM-4607: two curves on the surface the fin/pylon stands on, one on the other.
+            other = "lower" if pair.role == "upper" else "upper"
+            traces += [(pair.role, up.points), (pair.role, lo.points),
+                       (other, 0.5 * (up.points + lo.points))]
         if pair.b == body.name:
             attached.append((work[pair.a], up, lo))
         inters[up.name], inters[lo.name] = up.points, lo.points
@@ -237,7 +242,7 @@ def _other_components(cfg, wing, body, opts, log):
             if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
                 plane = "xz"  # a centre-line body described by its y >= 0 half
         nets.update({k: (v, plane) for k, v in mine.items()})
-    return nets, inters, attached
+    return nets, inters, attached, traces
 
 
 def _split_layout(body, wing, fu, fl, attached, n_half, log):
@@ -365,7 +370,8 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         log.extend(part.log)
     n_half = (getattr(body, "points_per_section", None) or (19,))[0]
     completed = cfg.with_component(body) if body is not body0 else cfg
-    other_nets, other_inters, attached = _other_components(completed, wing, body, opts, log)
+    other_nets, other_inters, attached, traces = _other_components(completed, wing, body, opts,
+                                                                   log)
     layout = opts.blocks
     if layout is None:
         layout = "split" if attached else 4
@@ -376,6 +382,14 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         nets, seams = _split_layout(body, wing, fu, fl, attached, n_half, log)
     else:
         nets, seams = juncture_networks(wing, body, fu, fl, layout, n_half)
+    if traces and f"{wing.name} upper" in nets and layout != 4:
+        from .component_networks import add_trace_curves, trace_curve
+
+        curves = [(side, trace_curve(wing, side, line)) for side, line in traces]
+        nets.update(add_trace_curves(wing, {k: nets[k] for k in
+                                            (f"{wing.name} upper", f"{wing.name} lower")},
+                                     curves))
+        log.append(f"{len(curves)} curves traced on {wing.name} where fins or pylons meet it")
     for s in seams:
         log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
     sym = {k: "xz" for k in nets}

@@ -23,7 +23,8 @@ import numpy as np
 from .errors import JunctureWarning
 from .intersect.body import side_label
 
-__all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike"]
+__all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike",
+           "trace_curve", "add_trace_curves"]
 
 
 def interpolated(wing, count):
@@ -138,3 +139,55 @@ def nacelle_network(pod, pylon_inters, n_points=None):
     t = np.linspace(0.0, 1.0, n)
     theta = lo[:, None] + t[None, :] * (hi - lo)[:, None]
     return pod.point(xs[:, None], theta)
+
+
+def _wing_params(wing, points):
+    """(span, chord fraction) of points lying on a wing-type surface (sections at constant y)."""
+    s = points[:, 1]
+    st = wing.span_stations
+    k = np.clip(np.searchsorted(st, s, side="right") - 1, 0, wing.n_sections - 2)
+    lam = (s - st[k]) / (st[k + 1] - st[k])
+    x_le = wing.le[k, 0] + lam * (wing.le[k + 1, 0] - wing.le[k, 0])
+    chord = wing.chord[k] + lam * (wing.chord[k + 1] - wing.chord[k])
+    return s, (points[:, 0] - x_le) / chord
+
+
+def trace_curve(wing, side, line):
+    """A curve on ``wing``'s ``side`` at its chord stations that traces an intersection line.
+
+    In the wing's parameters the line is a span y(f) over its chord fractions f; the curve takes
+    y(f) at each of the wing's stations (held constant beyond the line's ends) and the wing's
+    surface point there. It lies on the surface everywhere and follows the line at the wing's
+    own chord stations: it meets the intersection points exactly only where a station does
+    (passing through every one would need extra m-lines across the whole wing, the
+    accounting problem TM-4607 describes). Returns (n_stations, 3).
+    """
+    ok = np.all(np.isfinite(line), axis=1)
+    y, f = _wing_params(wing, line[ok])
+    order = np.argsort(f)
+    fs = wing.x_over_c / 100.0
+    span = np.interp(fs, f[order], y[order])
+    return wing.point(span, fs, side)
+
+
+def add_trace_curves(wing, nets, traces):
+    """Insert traced curves into the wing's networks (n-lines = sections, in span order).
+
+    ``traces`` is a list of (side, curve (n_stations, 3)); ``nets`` maps "wing upper"/"wing
+    lower" to networks whose n-lines are spanwise stations (first n-line at the body).
+    """
+    out = dict(nets)
+    for side in ("upper", "lower"):
+        name = f"{wing.name} {side}"
+        curves = [c for s_, c in traces if s_ == side]
+        if name not in out or not curves:
+            continue
+        net = out[name]
+        natural = np.allclose(net[:, 0, 0], np.min(net[:, :, 0], axis=1))  # points LE -> TE?
+        add = [c if natural else c[::-1] for c in curves]
+        lines = np.concatenate([net, np.stack(add)], axis=0)
+        span = lines[:, :, 1].mean(axis=1)
+        keep_first = lines[:1]  # the body-side line stays first
+        rest = lines[1:][np.argsort(span[1:], kind="stable")]
+        out[name] = np.concatenate([keep_first, rest], axis=0)
+    return out

@@ -126,3 +126,23 @@ def test_interpolated_empennage_sections_lie_on_the_input_loft():
     for line in net[1:]:
         np.testing.assert_allclose(line, tail.point(line[0, 1], tail.x_over_c / 100, "upper"),
                                    atol=1e-9)
+
+
+def test_wing_gets_curves_where_pylons_meet_it():
+    from juncture.component_networks import trace_curve
+
+    cfg = example()
+    geo = jc.complete(cfg, "cubic")
+    wing = cfg["wing"]
+    # Per pylon (two of them): two curves on the lower surface, one on the upper.
+    plain = jc.complete(cfg.replace(components={k: v for k, v in cfg.components.items()
+                                                if k not in ("fin 1", "fin 2")}), "cubic")
+    assert len(geo.networks["wing lower"]) == len(plain.networks["wing lower"]) + 4
+    assert len(geo.networks["wing upper"]) == len(plain.networks["wing upper"]) + 2
+    for name in ("fin 1/wing outboard", "fin 2/wing inboard"):
+        line = geo.intersections[name]
+        curve = trace_curve(wing, "lower", line)
+        z, inside = surface_height(wing, curve, "lower")
+        assert np.abs(curve[:, 2] - z).max() < 1e-9
+        assert any(np.allclose(curve, n) or np.allclose(curve[::-1], n)
+                   for n in geo.networks["wing lower"])
