@@ -122,7 +122,8 @@ def _cmd_demo(args):
     summary_args = argparse.Namespace(fillet="cubic", keep_area=True)
     written = _write_outputs(cfg, geo, out, ("wgs", "p3d", "hess", "stl", "vtk", "step", "igs"),
                              "cubic", True, summary_args)
-    cases = {"original": wavedrag(cfg), "cubic fillet": wavedrag(cfg, geometry=sharp),
+    cases = {"original": wavedrag(cfg, geometry=complete(cfg, None, False)),
+             "cubic fillet": wavedrag(cfg, geometry=sharp),
              "cubic fillet, fixed area": wavedrag(cfg, geometry=geo)}
     plot_area_distribution(cases, out / "wavedrag_areas.png", title=cfg.title)
     with atomic_output(out / "wavedrag.json") as fh:
@@ -233,7 +234,7 @@ def _report(cfg, geo, out, fillet, keep_area, command):
     from .massprops import configuration_mass_properties
     from .report import write_report
 
-    cases = {"original": wavedrag(cfg)}
+    cases = {"original": wavedrag(cfg, geometry=complete(cfg, None, False))}
     if fillet is not None:
         cases[f"{fillet} fillet"] = wavedrag(cfg, geometry=geo if not keep_area else
                                              complete(cfg, fillet, False))
@@ -263,8 +264,10 @@ def _wavedrag_cases(cfg, args):
     """Label -> (configuration, completed geometry or None) for the wavedrag command."""
     from .complete import complete
 
-    cases = {"original": None}
     fillet = None if args.fillet in (None, "none") else args.fillet
+    # With a fillet, compare completed surfaces: a root section given on the fuselage leaves a
+    # gap in the deck (TM-4406 fig 3) that the completed wing fills, fillet or not.
+    cases = {"original": None if fillet is None else complete(cfg, None, False)}
     if fillet is not None:
         cases[f"{fillet} fillet"] = complete(cfg, fillet, False)
         if args.keep_area:

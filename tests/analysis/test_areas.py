@@ -165,7 +165,12 @@ def test_images_count_twice_and_components_subset(transport):
     x = np.linspace(200.0, 240.0, 9)
     a = normal_area_distribution(transport, x)
     pod = transport["pod 1"]
-    assert a["pod 1"] == pytest.approx(2 * np.pi * pod.radius_at(x) ** 2, rel=1e-13)
+    # An open nacelle is flow-through: its inlet capture area is subtracted over its length.
+    inside = (x >= pod.x_global[0]) & (x <= pod.x_global[-1])
+    wall = np.pi * (pod.radius_at(x) ** 2 - np.where(inside, pod.radius[0] ** 2, 0.0))
+    assert a["pod 1"] == pytest.approx(2 * wall, rel=1e-12, abs=1e-12)
+    solid = normal_area_distribution(transport, x, flow_through=False)
+    assert solid["pod 1"] == pytest.approx(2 * np.pi * pod.radius_at(x) ** 2, rel=1e-13)
     assert a["body"] == pytest.approx(np.pi * transport["body"].radius_at(x) ** 2, rel=1e-13)
     sub = normal_area_distribution(transport, x, components=["wing", "pod 1"])
     assert set(sub) == {"x", "wing", "pod 1", "total"}

@@ -428,11 +428,23 @@ def default_stations(obj, n_x=101):
     return np.linspace(ext[0, 0], ext[1, 0], n_x)
 
 
+def is_flow_through(body):
+    """True for a nacelle (a pod: off the centre line or mirrored) with an open front.
+
+    Its inlet captures a streamtube of the first station's radius; the area-rule practice is
+    to subtract that tube from the nacelle's areas (a flow-through nacelle), which also makes
+    the area distribution start continuously at the inlet.
+    """
+    return (isinstance(body, CircularBody) and (body.mirrored or body.origin[1] != 0.0)
+            and body.radius[0] > 0.0)
+
+
 def _copies(comp, cfg):
     return 2.0 if (cfg.symmetric and comp.mirrored) else 1.0
 
 
-def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_GAUSS):
+def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_GAUSS,
+                             flow_through=True):
     """Normal cross-sectional areas ``A(x)`` of a configuration, both halves, from the model.
 
     Parameters
@@ -452,6 +464,9 @@ def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_G
         Number of default stations.
     n_gauss : int
         Gauss points per span piece of a wing-like component.
+    flow_through : bool
+        Subtract each open nacelle's inlet capture area (a flow-through nacelle, see
+        :func:`juncture.analysis.closed.is_flow_through`).
 
     Returns
     -------
@@ -491,6 +506,10 @@ def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_G
     for comp in comps:
         if isinstance(comp, (CircularBody, ArbitraryBody)):
             a = comp.area_at(xs)
+            if flow_through and is_flow_through(comp):
+                xg = comp.x_global
+                a = a - np.where((xs >= xg[0]) & (xs <= xg[-1]), np.pi * comp.radius[0] ** 2,
+                                 0.0)
         else:
             a = winglike_normal_area(comp, xs, bodies, n_gauss)
         a = _copies(comp, cfg) * np.asarray(a, dtype=float)
@@ -498,6 +517,33 @@ def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_G
         total = total + a
     out["total"] = total
     return out
+
+
+def _face_extents(networks, mach, thetas):
+    """First and last Mach planes, stopping at a flat nose or base face rather than past it.
+
+    A configuration that ends in a flat face (an open base, the deck's usual fuselage end)
+    has, in the normal-area (slender-body) view, its base area as the last station. Oblique
+    planes slice such a face over a short interval of X whose areas fall from the base area
+    to zero; ending the equivalent body at the first plane that touches the face keeps the
+    open-base convention, so the far field tends to the normal-area result as M -> 1.
+    """
+    from .cuts import mach_plane_extents
+
+    ext = np.array(mach_plane_extents(networks, mach, thetas), dtype=float)
+    items = networks.mirrored_networks().values() if hasattr(networks, "mirrored_networks") \
+        else (networks.values() if hasattr(networks, "values") else networks)
+    pts = np.concatenate([np.asarray(n, float).reshape(-1, 3) for n in items])
+    beta = np.sqrt(max(float(mach) ** 2 - 1.0, 0.0))
+    size = float(np.ptp(pts, axis=0).max()) or 1.0
+    for k, (end, pick) in enumerate(((pts[:, 0].min(), np.max), (pts[:, 0].max(), np.min))):
+        face = pts[np.abs(pts[:, 0] - end) <= 1e-9 * size]
+        if np.ptp(face[:, 1:], axis=0).max() <= 1e-9 * size:
+            continue  # a pointed end, not a face: keep the first / last touching plane
+        x_cut = face[:, 0][None, :] - beta * (face[:, 1][None, :] * np.cos(thetas)[:, None]
+                                              + face[:, 2][None, :] * np.sin(thetas)[:, None])
+        ext[:, k] = pick(x_cut, axis=1)
+    return ext
 
 
 def mach_plane_area_distribution(obj, mach, n_x=100, n_theta=16, networks=None):
@@ -532,7 +578,7 @@ def mach_plane_area_distribution(obj, mach, n_x=100, n_theta=16, networks=None):
     from the vertical, as some programs do (phi = pi/2 - theta), that is S(phi) = S(-phi).
     """
     from .closed import closed_networks
-    from .cuts import mach_plane_areas, mach_plane_extents
+    from .cuts import mach_plane_areas
 
     n_theta, n_x = int(n_theta), int(n_x)
     if n_theta < 1 or n_x < 2:
@@ -540,7 +586,7 @@ def mach_plane_area_distribution(obj, mach, n_x=100, n_theta=16, networks=None):
     if networks is None:
         networks = closed_networks(obj) if hasattr(obj, "components") else obj
     thetas = 2.0 * np.pi * np.arange(n_theta) / n_theta
-    ext = mach_plane_extents(networks, mach, thetas)
+    ext = _face_extents(networks, mach, thetas)
     offsets = np.linspace(ext[:, 0], ext[:, 1], n_x).T
     return {"thetas": thetas, "x": offsets,
             "area": mach_plane_areas(networks, mach, thetas, offsets)}

@@ -41,9 +41,10 @@ import numpy as np
 from ..errors import GeometryError
 from ..intersect import intersect_body, polyline_points
 from ..model import ArbitraryBody, CircularBody, WingLike
-from .areas import _body_box, _boxes_overlap, _wing_box
+from .areas import _body_box, _boxes_overlap, _wing_box, is_flow_through
 
-__all__ = ["closed_networks", "body_solid", "winglike_solid", "oriented"]
+__all__ = ["is_flow_through", "capture_tube", "closed_networks", "body_solid",
+           "winglike_solid", "oriented"]
 
 
 def oriented(net, direction):
@@ -297,7 +298,16 @@ def _edge_strip(dense, start, j, tol):
 # Configurations
 
 
-def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5):
+def capture_tube(body, n_theta=48):
+    """Inward-oriented closed networks of a nacelle's capture streamtube (a cylinder of the
+    inlet radius over the nacelle's length): their cut areas count negative."""
+    tube = CircularBody(f"{body.name} capture", [body.x[0], body.x[-1]],
+                        [body.radius[0]] * 2, origin=body.origin, axial="linear")
+    return {k: v[::-1] for k, v in body_solid(tube, n_theta, 2).items()}
+
+
+def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
+                    flow_through=True):
     """Closed, outward networks of every component of a configuration, both halves.
 
     Parameters
@@ -307,6 +317,8 @@ def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5)
         Resampling of wing-like components (see :func:`winglike_solid`).
     n_theta, n_body : int
         Resampling of bodies (see :func:`body_solid`).
+    flow_through : bool
+        Add each open nacelle's capture streamtube, inward (see :func:`is_flow_through`).
 
     Returns
     -------
@@ -328,6 +340,8 @@ def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5)
             nets = winglike_solid(comp, cfg.bodies, n_chord, n_span, n_cap)
         else:
             nets = body_solid(comp, n_theta, n_body)
+        if flow_through and is_flow_through(comp):
+            nets.update(capture_tube(comp, n_theta))
         out.update(nets)
         if cfg.symmetric and comp.mirrored:
             out.update({f"{k} image": _mirror(v) for k, v in nets.items()})

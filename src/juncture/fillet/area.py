@@ -164,7 +164,7 @@ class Compensation:
     fillets: tuple
 
 
-def reduced_body(body, x, area_removed, densify=4):
+def reduced_body(body, x, area_removed, densify=4, exposure=None):
     """``body`` with the fillet stations ``x`` added and pi r^2 reduced by ``area_removed``.
 
     The removed area is interpolated linearly between the stations (zero outside them) and
@@ -174,6 +174,10 @@ def reduced_body(body, x, area_removed, densify=4):
     (with only the fillet stations, the body's cubic radius would bulge between them and the
     area distribution, so the wave drag, would not be restored). Camber is kept. Raises
     GeometryError if the fillet needs more area than the body has.
+
+    ``exposure(x) -> L`` (optional) is the length of body perimeter at x covered by the roots
+    of wing-like components: shrinking the radius by d there uncovers about L d of their
+    area, which is removed too: pi (r0^2 - r^2) = A + L (r0 - r), solved exactly per station.
     """
     from ..model import CircularBody
 
@@ -182,7 +186,13 @@ def reduced_body(body, x, area_removed, densify=4):
     xg = body.x_global
     if densify and xs.size > 1:
         t = np.arange(1, densify + 1) / (densify + 1)
-        between = (xs[:-1, None] + t[None, :] * np.diff(xs)[:, None]).ravel()
+        # Also the body intervals just outside the fillet range, where nothing is removed:
+        # there the new stations pin the body to its original radius, so its cubic does not
+        # swing away from the original next to the last re-designed station.
+        before = xg[xg < xs[0]][-1:] if (xg < xs[0]).any() else xs[:1]
+        after = xg[xg > xs[-1]][:1] if (xg > xs[-1]).any() else xs[-1:]
+        knots = np.concatenate([before, xs, after])
+        between = (knots[:-1, None] + t[None, :] * np.diff(knots)[:, None]).ravel()
         stations = np.union1d(xs, between)
     else:
         stations = xs
@@ -200,18 +210,24 @@ def reduced_body(body, x, area_removed, densify=4):
     xn = np.concatenate(new_x)
     removed = np.interp(xn, xs, a, left=0.0, right=0.0)
     r0 = body.radius_at(xn)
-    r2 = r0 ** 2 - removed / np.pi
-    if np.any(r2 < 0):
-        k = int(np.argmax(r2 < 0))
+    lcov = np.zeros_like(xn) if exposure is None else np.asarray(exposure(xn), float)
+    # pi d^2 - (2 pi r0 - L) d + A = 0 for the radius reduction d = r0 - r (smaller root).
+    b = 2 * np.pi * r0 - lcov
+    disc = b * b - 4 * np.pi * removed
+    if np.any(disc < 0) or np.any(r0 ** 2 - removed / np.pi < 0):
+        k = int(np.argmax((disc < 0) | (r0 ** 2 - removed / np.pi < 0)))
         raise GeometryError(f"the fillet adds more area ({removed[k]:.4g}) than the body has "
                             f"at x = {xn[k]:.6g} ({np.pi * r0[k] ** 2:.4g}); use a smaller "
                             "fillet", body.name, f"x = {xn[k]:.6g}")
-    return CircularBody(body.name, xn - body.origin[0], np.sqrt(r2),
+    den = b + np.sqrt(disc)
+    # The stable form of (b - sqrt(disc)) / (2 pi); nothing to remove where the body is a point.
+    d = np.where(den > 0, 2 * removed / np.where(den > 0, den, 1.0), 0.0)
+    return CircularBody(body.name, xn - body.origin[0], r0 - d,
                         body.center_at(xn)[:, 1] - body.origin[2], body.origin,
                         tuple(seg_sizes), body.mirrored, body.axial, body.points_per_section)
 
 
-def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
+def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None):
     """Shrink the body until body area + added area equals the original area (TM-4406).
 
     TM-4406 compensates the fillet's area (eq 14) only. When the body shrinks, the wing's
@@ -235,6 +251,16 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
         How many fillets share each body cross-section: 2 for a wing with a mirror image (the
         body's pi r^2 is the whole section, so both sides' fillets are compensated), 1 for a
         surface on the plane of symmetry.
+    exposure : callable, optional
+        ``exposure(x) -> L``: body perimeter covered by wing-like roots at x (all of them,
+        both sides; see :func:`reduced_body`). Without it the uncovered wing root is measured
+        on the fillet stations only (from the fillet polygons).
+    exposure : callable, optional
+        ``exposure(x) -> L``: body perimeter covered by wing-like roots at x (all of them,
+        both sides; see :func:`reduced_body`). The fillets are then measured on their
+        stations and the uncovered roots everywhere on the re-designed body, so the whole
+        cross-section keeps its area between the fillet stations too. Without it the
+        uncovered wing root is measured on the fillet stations only (fillet polygons).
 
     Returns
     -------
@@ -260,29 +286,35 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2):
         parts = make_fillets(current, hints)
         x, only, a_f = fillet_added_area(current, *parts[2:], *parts[:2], reference_body=body)
         only, a_f = sides * only, sides * a_f
-        a0 = np.pi * body.radius_at(x) ** 2
-        a_b = np.pi * current.radius_at(x) ** 2
+        r_orig, r_now = body.radius_at(x), current.radius_at(x)
+        if exposure is not None:
+            # Fillets by their polygons; every uncovered root by its covered perimeter.
+            a_f = only + exposure(x) * (r_orig - r_now)
+        a0 = np.pi * r_orig ** 2
+        a_b = np.pi * r_now ** 2
         residual = np.abs(a_b + a_f - a0) / np.where(a0 > 0, a0, 1.0)
         met = residual <= tolerance
         first_met = np.where(met, it, 0) if first_met is None else \
             np.where((first_met == 0) & met, it, first_met)
         if met.all():
-            return Compensation(current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi),
-                                current.radius_at(x), residual, first_met, it, parts)
-        # Per-station secant on F(t) = G(t) - t, G the added area of the body built with t
-        # removed; the paper's plain substitution t = G(t) on the first step and wherever the
-        # secant is undefined.
-        history.append((removed, a_f))
-        target = a_f
+            return Compensation(current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi), r_now,
+                                residual, first_met, it, parts)
+        # The unknown t per station: the area given up for the fillets (and, without an
+        # exposure model, for the uncovered root too). Per-station secant on G(t) - t, G
+        # measured on the body built with t; plain substitution on the first step and where
+        # the secant is undefined.
+        g = only if exposure is not None else a_f
+        history.append((removed, g))
+        target = g
         if len(history) >= 2:
             (t0, g0), (t1, g1) = history[-2], history[-1]
             f0, f1 = g0 - t0, g1 - t1
             with np.errstate(divide="ignore", invalid="ignore"):
                 sec = t1 - f1 * (t1 - t0) / (f1 - f0)
             ok = np.isfinite(sec) & (np.abs(f1 - f0) > 1e-15 * np.maximum(np.abs(g1), 1e-300))
-            target = np.where(ok, sec, a_f)
+            target = np.where(ok, sec, g)
         removed = target
-        current = reduced_body(body, x, target)
+        current = reduced_body(body, x, target, exposure=exposure)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
         hints = (parts[0].u, parts[1].u) if np.all(target >= 0) else None
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "

@@ -216,7 +216,38 @@ class WingLike:
         w = lam.ravel()[:, None]
         return ((1.0 - w) * pts[0] + w * pts[1]).reshape(s.shape + (3,))
 
-    def with_sections(self, span):
+    def with_chord_stations(self, x_over_c):
+        """A copy with extra chordwise stations [% chord], on the present section curves.
+
+        The ordinates at new stations come from the section's own chordwise interpolation, so
+        the sections pass through the same points; between them the (PCHIP) curves through
+        the denser points differ from the original ones by O(h^4). Input stations are kept.
+        """
+        xc = np.union1d(self.x_over_c, np.asarray(x_over_c, float))
+        if xc.size == self.n_stations:
+            return self
+        f = xc / 100.0
+        up, lo, cam = (interpolate_chordwise(self.x_over_c, a, f, self.chordwise)
+                       for a in (self.upper, self.lower, self.camber))
+        # Round-off can leave -1e-17 where a thickness returns to zero.
+        args = (np.maximum(up, 0.0), np.maximum(lo, 0.0), cam)
+        return WingLike(self.name, self.kind, self.le, self.chord, xc, *args, self.mirrored,
+                        self.chordwise)
+
+    def extended_to(self, span):
+        """A copy whose lofting lines continue straight beyond the root to ``span``.
+
+        A new root section is added at the span station ``span`` (inboard of the present
+        root) on the extended lofting lines, as TM-4406 eq 4 extends them to meet a body;
+        the surface between is exactly that extension. Returns ``self`` if ``span`` is not
+        inboard of the root.
+        """
+        s0 = self.span_stations[0]
+        if not span < s0:
+            return self
+        return self.with_sections([span], extrapolate=True)
+
+    def with_sections(self, span, extrapolate=False):
         """A copy with extra sections inserted at the given span stations (linear loft).
 
         The new sections lie exactly on the lofted surface at the input stations: their leading
@@ -227,7 +258,7 @@ class WingLike:
         new = np.setdiff1d(np.asarray(span, float), st)
         if new.size == 0:
             return self
-        k, lam = self._bracket(new, extrapolate=False)
+        k, lam = self._bracket(new, extrapolate=extrapolate)
         w = lam[:, None]
         le = (1 - w) * self.le[k] + w * self.le[k + 1]
         chord = (1 - lam) * self.chord[k] + lam * self.chord[k + 1]
