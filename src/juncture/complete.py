@@ -170,7 +170,7 @@ def _extended_roots(cfg, body, attached, log):
     return cfg
 
 
-def _root_exposure(cfg, wing, body0, sides, opts):
+def _root_exposure(cfg, wing, body0, sides, found):
     """``L(x)``: perimeter of the original fuselage covered by wing-like roots at x.
 
     The main wing's root spans its upper to lower intersection angles; every other wing-like
@@ -178,10 +178,9 @@ def _root_exposure(cfg, wing, body0, sides, opts):
     Shrinking the fuselage by d at x uncovers about L(x) d of their area (TM-4406 ignores
     this; compensating it keeps the whole cross-section's area, not just the fillet's).
     """
-    from .intersect import find_intersections, intersect_body_both
+    from .intersect import intersect_body_both
 
     lines = [(sides, intersect_body_both(wing, body0))]
-    found = find_intersections(cfg, explicit=opts.pairs, skip={(wing.name, body0.name)})
     for pair, (up, lo) in found.items():
         if pair.b == body0.name:
             comp = cfg[pair.a]
@@ -271,17 +270,34 @@ def _single_network(wing, body, upper, lower, n_half):
     return out, [s for s in seams if s["a"].startswith("wing")]
 
 
-def _other_components(cfg, wing, body, opts, log):
-    """Intersections and networks of every component except the main wing and fuselage."""
-    from .component_networks import interpolated, nacelle_network, trimmed_networks
-    from .intersect import find_intersections
-    from .model import WingLike
+def _with_empennage(cfg, wing, opts):
+    """``cfg`` with two-section canards, fins, tails and pylons interpolated (TM-4607)."""
+    from .component_networks import interpolated
 
     work = cfg
     for comp in cfg.wings:
         if comp.name != wing.name and comp.kind in ("canard", "tail", "fin", "pylon"):
             work = work.with_component(interpolated(comp, opts.empennage_sections))
-    found = find_intersections(work, explicit=opts.pairs, skip={(wing.name, body.name)})
+    return work
+
+
+def _other_components(cfg, wing, body, opts, log, known=None):
+    """Intersections and networks of every component except the main wing and fuselage.
+
+    ``known``: intersections found before the fuselage was re-designed; only the pairs with
+    the fuselage are solved again.
+    """
+    from .component_networks import nacelle_network, trimmed_networks
+    from .intersect import find_intersections
+    from .intersect.pairs import intersect_pair
+    from .model import WingLike
+
+    work = _with_empennage(cfg, wing, opts)
+    if known is None:
+        found = find_intersections(work, explicit=opts.pairs, skip={(wing.name, body.name)})
+    else:
+        found = {p: (intersect_pair(work, p) if p.b == body.name else res)
+                 for p, res in known.items()}
     inters, by_comp, pylons, attached, traces = {}, {}, {}, [], []
     for pair, (up, lo) in found.items():
         if pair.b == wing.name and pair.role in ("upper", "lower"):
@@ -418,8 +434,12 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     make = _fillet_maker(wing, fillet, opts, body0)
     sides = 2 if (wing.mirrored and cfg.symmetric) else 1
     if keep_area and fillet is not None:
+        from .intersect import find_intersections
+
+        known = find_intersections(_with_empennage(cfg, wing, opts), explicit=opts.pairs,
+                                   skip={(wing.name, body0.name)})
         comp = _keep_area(body0, make, tolerance=opts.tolerance, sides=sides,
-                          exposure=_root_exposure(cfg, wing, body0, sides, opts))
+                          exposure=_root_exposure(cfg, wing, body0, sides, known))
         body = comp.body
         iu, il, fu, fl = comp.fillets
         stations = {"x": comp.x, "area_original": comp.area_original,
@@ -451,8 +471,8 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         log.extend(part.log)
     n_half = (getattr(body, "points_per_section", None) or (19,))[0]
     completed = cfg.with_component(body) if body is not body0 else cfg
-    other_nets, other_inters, attached, traces = _other_components(completed, wing, body, opts,
-                                                                   log)
+    other_nets, other_inters, attached, traces = _other_components(
+        completed, wing, body, opts, log, known if keep_area and fillet is not None else None)
     layout = opts.blocks
     if layout is None:
         layout = "split" if attached else 4
