@@ -56,7 +56,8 @@ def bounding_curve(x, regions, x_nose, x_end, side=0.0):
     return np.interp(x, xs[order], ths[order])
 
 
-def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=10):
+def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=10,
+               stations=None):
     """Upper and lower fuselage networks split by theta_b (TM-4607).
 
     Parameters
@@ -69,13 +70,15 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         there instead of at pi/2).
     n_upper, n_lower : int
         Points per cross-section of each network.
+    stations : (k,) float, optional
+        Body stations to use besides the intersection points' (default: all the body's).
 
     Returns
     -------
     dict with "body upper" and "body lower" networks (n_stations, n_points, 3)
     """
-    xg = body.x_global
-    x_nose, x_end = float(xg[0]), float(xg[-1])
+    xg = body.x_global if stations is None else np.asarray(stations, float)
+    x_nose, x_end = float(body.x_global[0]), float(body.x_global[-1])
     xu = np.unique(np.concatenate([xg] + [r.x for r in upper_regions] + [f.x for f in fins]))
     xl = np.unique(np.concatenate([xg] + [r.x for r in lower_regions]))
     bottom, top_value, side = body_range(body)

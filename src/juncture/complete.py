@@ -84,11 +84,11 @@ class CompleteOptions:
     min_lofting_lines : int
         With ``keep_area``: a wing with fewer chordwise stations gets extra ones, each input
         interval divided evenly, so the fuselage is re-designed at that many fillet stations.
-        The area is exact at the stations and interpolated between them: the PDAS deck's
-        three lofting lines leave its slender-body drag 0.15 % off, 25 bring it within
-        1e-4. The new stations lie on the section curves but the curves through them differ
-        a little between stations (PCHIP refitted), so this changes the wing: off (0) by
-        default.
+        The new stations lie on the section curves, but the curves through them differ a
+        little between stations (PCHIP refitted), so this changes the wing: off (0) by
+        default, and rarely needed (the re-designed body follows the compensation between
+        fillet stations; the PDAS deck's three lofting lines already restore its drag to
+        2.3e-4).
     """
 
     theta_u_deg: float = 20.0
@@ -333,7 +333,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
     return nets, inters, attached, traces
 
 
-def _split_layout(body, wing, fu, fl, attached, n_half, log):
+def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
     from .body_split import Boundary, boundary_from_points, seam_gap, split_body
 
@@ -346,8 +346,8 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log):
             los.append(boundary_from_points(body, lo.points, comp.name))
         elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
             fins.append(boundary_from_points(body, up.points, comp.name))
-    nets = split_body(body, ups, los, fins, n_upper=n_half, n_lower=n_half)
-    six, _ = juncture_networks(wing, body, fu, fl, 6, n_half)
+    nets = split_body(body, ups, los, fins, n_upper=n_half, n_lower=n_half, stations=stations)
+    six, _ = juncture_networks(wing, body, fu, fl, 6, n_half, stations)
     nets["wing upper"], nets["wing lower"] = six["wing upper"], six["wing lower"]
     seams = [{"a": "body upper", "b": "wing upper", "seam": "fillet start line",
               "points": len(fu.start), "max_gap": seam_gap(fu.start, nets["body upper"])},
@@ -473,6 +473,9 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     completed = cfg.with_component(body) if body is not body0 else cfg
     other_nets, other_inters, attached, traces = _other_components(
         completed, wing, body, opts, log, known if keep_area and fillet is not None else None)
+    # The networks use the input body stations (plus the intersections'); a re-designed body
+    # holds many more, only so that its area follows the compensation between them.
+    net_stations = body0.x_global
     layout = opts.blocks
     if layout is None:
         layout = "split" if attached else 4
@@ -480,9 +483,9 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         fl = _reinterpolated_lower(body, fu, fl)
         nets, seams = _single_network(wing, body, fu, fl, n_half)
     elif layout == "split":
-        nets, seams = _split_layout(body, wing, fu, fl, attached, n_half, log)
+        nets, seams = _split_layout(body, wing, fu, fl, attached, n_half, log, net_stations)
     else:
-        nets, seams = juncture_networks(wing, body, fu, fl, layout, n_half)
+        nets, seams = juncture_networks(wing, body, fu, fl, layout, n_half, net_stations)
     if traces and f"{wing.name} upper" in nets and layout != 4:
         from .component_networks import add_trace_curves, trace_curve
 

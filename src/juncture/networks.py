@@ -84,7 +84,7 @@ def _strip(wing, fillet, side, k_first):
     return np.concatenate([fillet.points, sec], axis=1)
 
 
-def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None):
+def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, stations=None):
     """Output networks of a wing-body juncture, and the gaps along their shared seams.
 
     Parameters
@@ -99,6 +99,8 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None):
     n_body_points : int, optional
         Points per half cross-section of the body ahead and aft (default: the body's own
         ``points_per_section`` or 19).
+    stations : (k,) float, optional
+        Body stations for the networks ahead and aft (default: all of the body's).
 
     Returns
     -------
@@ -121,7 +123,7 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None):
     arc_l = arc_points(body, xl, np.full(xl.size, bottom), lower.theta_start, n_below)
     strip_u = _strip(wing, upper, "upper", k_first)
     strip_l = _strip(wing, lower, "lower", k_first)
-    xg = body.x_global
+    xg = body.x_global if stations is None else np.asarray(stations, float)
     x_le, x_te = xu[0], xu[-1]
     ahead = np.concatenate([xg[xg < x_le], [x_le]])
     aft = np.concatenate([[x_te], xg[xg > x_te]])

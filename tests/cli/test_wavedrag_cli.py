@@ -37,16 +37,16 @@ def test_fillet_raises_drag_and_fixed_area_restores_it(capsys, fillet):
 
 @pytest.mark.parametrize("fillet", ["cubic", "circular"])
 def test_fixed_area_on_a_sparse_deck_with_more_lofting_lines(fillet):
-    """The PDAS deck has three lofting lines: the area is exact at its one interior fillet
-    station only. With the chord subdivided (the same section curves), the fixed-area drag
-    returns to the unfilleted one within 0.1 %; with the three lines it is within 0.25 %."""
+    """The PDAS deck has three lofting lines, so a single interior fillet station: the fixed-
+    area drag still returns to the unfilleted one within 0.1 %, and with the chord
+    subdivided (the same section curves) too."""
     from juncture.analysis import wavedrag
 
     cfg = jc.read(PDAS_DECK)
     base = wavedrag(cfg, geometry=jc.complete(cfg, None))["D_over_q"]
     filleted = wavedrag(cfg, geometry=jc.complete(cfg, fillet))["D_over_q"]
     fixed = wavedrag(cfg, geometry=jc.complete(cfg, fillet, True))["D_over_q"]
-    assert filleted > base and abs(fixed - base) < 2.5e-3 * base
+    assert filleted > base and abs(fixed - base) < 1e-3 * base
     wing = cfg["wing"]
     xc, t = wing.x_over_c, np.arange(1, 12) / 12
     fine = cfg.with_component(wing.with_chord_stations(

@@ -164,13 +164,14 @@ class Compensation:
     fillets: tuple
 
 
-def reduced_body(body, x, area_removed, densify=4, exposure=None):
+def reduced_body(body, x, area_removed, densify=32, exposure=None):
     """``body`` with the fillet stations ``x`` added and pi r^2 reduced by ``area_removed``.
 
     The removed area is interpolated linearly between the stations (zero outside them) and
     taken off at every station of the new body, so the new radius at a fillet station x_j is
     exactly sqrt(r0(x_j)^2 - A_j / pi). ``densify`` extra stations between neighbouring fillet
-    stations make the body's area follow that linear interpolation closely in between too
+    stations (32: the drag of the PDAS deck's three-station case needs that many near the
+    kinks where the fillet starts) make the body's area follow that interpolation in between
     (with only the fillet stations, the body's cubic radius would bulge between them and the
     area distribution, so the wave drag, would not be restored). Camber is kept. Raises
     GeometryError if the fillet needs more area than the body has.
