@@ -17,7 +17,8 @@ import numpy as np
 
 from .networks import body_range, orient, radial_outward
 
-__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "seam_gap"]
+__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "seam_gap",
+           "polyline_gap"]
 
 
 class Boundary:
@@ -104,3 +105,14 @@ def seam_gap(points, net):
         return 0.0
     d = np.linalg.norm(points[ok, None, :] - edges[None, :, :], axis=-1).min(axis=1)
     return float(d.max())
+
+
+def polyline_gap(points, net):
+    """Largest distance from ``points`` (k, 3) to the nearest n-line polyline of ``net``."""
+    ok = np.all(np.isfinite(points), axis=1)
+    p = points[ok][:, None, None, :]
+    a, b = net[None, :, :-1], net[None, :, 1:]
+    d = b - a
+    t = np.clip(((p - a) * d).sum(-1) / np.maximum((d * d).sum(-1), 1e-300), 0.0, 1.0)
+    dist = np.linalg.norm(p - a - t[..., None] * d, axis=-1)
+    return float(dist.min(axis=(1, 2)).max()) if ok.any() else 0.0

@@ -218,9 +218,14 @@ def _print_completion(cfg, geo, fillet):
           f"lines; fillet {fillet}; {len(st['x'])} fillet stations")
     if pairs:
         print(f"  {pairs[0]}")
-    gaps = [float(s.rsplit("max gap ", 1)[1]) for s in geo.log if s.startswith("seam")]
+    seams = [s for s in geo.log if s.startswith("seam")]
+    gaps = [float(s.rsplit("max gap ", 1)[1]) for s in seams if "traced" not in s]
     if gaps:
         print(f"  {len(gaps)} seams between networks, largest gap {max(gaps):.3g}")
+    traced = [float(s.rsplit("max gap ", 1)[1]) for s in seams if "traced" in s]
+    if traced:
+        print(f"  {len(traced)} fin/pylon lines traced on the wing at its stations, within "
+              f"{max(traced):.3g} of the wing grid")
     if fillet is not None:
         print(f"  added area up to {st['area_fillet'].max():.4g}; radius reduced by up to "
               f"{(st['radius_original'] - st['radius_new']).max():.4g}; worst area residual "

@@ -330,6 +330,14 @@ def _other_components(cfg, wing, body, opts, log, known=None):
             if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
                 plane = "xz"  # a centre-line body described by its y >= 0 half
         nets.update({k: (v, plane) for k, v in mine.items()})
+    from .body_split import seam_gap
+
+    for pod_name, lines in pylons.items():
+        pod_net = nets[pod_name][0]
+        for out_i, in_i in lines:
+            for inter in (out_i, in_i):
+                log.append(f"seam {pod_name} / {inter.name.split('/')[0]} ({inter.name} line): "
+                           f"max gap {seam_gap(inter.points, pod_net):.3g}")
     return nets, inters, attached, traces
 
 
@@ -346,7 +354,12 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
             los.append(boundary_from_points(body, lo.points, comp.name))
         elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
             fins.append(boundary_from_points(body, up.points, comp.name))
-    nets = split_body(body, ups, los, fins, n_upper=n_half, n_lower=n_half, stations=stations)
+    # The same point count per cross-section, split so the spacing is even at the wing's
+    # leading-edge station (TM-4607): the shares follow the arcs below and above theta_w.
+    b_lo, b_hi, _ = body_range(body)
+    n_lower, n_upper = split_counts(float(fu.theta_start[0]), 2 * n_half - 1, b_lo, b_hi)
+    nets = split_body(body, ups, los, fins, n_upper=n_upper, n_lower=n_lower,
+                      stations=stations)
     six, _ = juncture_networks(wing, body, fu, fl, 6, n_half, stations)
     nets["wing upper"], nets["wing lower"] = six["wing upper"], six["wing lower"]
     seams = [{"a": "body upper", "b": "wing upper", "seam": "fillet start line",
@@ -494,6 +507,16 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                                             (f"{wing.name} upper", f"{wing.name} lower")},
                                      curves))
         log.append(f"{len(curves)} curves traced on {wing.name} where fins or pylons meet it")
+        from .body_split import polyline_gap
+
+        for name, pts in other_inters.items():
+            if name.split("/")[1].startswith(f"{wing.name} "):
+                # The traced curves follow the line at the wing's own chord stations only.
+                gap = min(polyline_gap(pts, nets[f"{wing.name} {side}"])
+                          for side in ("upper", "lower"))
+                seams.append({"a": f"{wing.name}", "b": name.split("/")[0],
+                              "seam": f"{name} line (traced at the wing's stations)",
+                              "points": len(pts), "max_gap": gap})
     for s in seams:
         log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
     sym = {k: "xz" for k in nets}
