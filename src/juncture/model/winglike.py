@@ -71,6 +71,7 @@ class WingLike:
     camber: np.ndarray = None
     mirrored: bool = True
     chordwise: ChordwiseInterpolation = "pchip"
+    _poly: dict = None
 
     def __post_init__(self):
         name = self.name
@@ -109,6 +110,7 @@ class WingLike:
                              ("lower", lo), ("camber", cam)):
             object.__setattr__(self, field, value)
         object.__setattr__(self, "mirrored", bool(self.mirrored))
+        object.__setattr__(self, "_poly", {})
 
     # -- layout -------------------------------------------------------------------------
     @property
@@ -181,6 +183,27 @@ class WingLike:
                                     "the lofting lines)", self.name)
         return k, lam
 
+    def _chord_cubics(self, side):
+        """Chordwise piecewise cubics of every section's offsets, built once per side.
+
+        Returns (breaks (n_stations,) in chord fraction, coefs (4, n_stations - 1,
+        n_sections)) in the local variable f - breaks[i], the same curves as
+        :func:`interpolate_chordwise`.
+        """
+        if side not in self._poly:
+            from scipy.interpolate import PchipInterpolator
+
+            t = self.x_over_c / 100.0
+            off = self._offsets(side)  # (n_sections, n_stations)
+            if self.chordwise == "pchip":
+                coefs = PchipInterpolator(t, off.T, axis=0).c  # (4, n_st - 1, n_sec)
+            else:
+                slope = np.diff(off, axis=1).T / np.diff(t)[:, None]
+                coefs = np.stack([np.zeros_like(slope), np.zeros_like(slope), slope,
+                                  off[:, :-1].T])
+            self._poly[side] = (t, coefs)
+        return self._poly[side]
+
     def point(self, span, fraction, side: Side = "upper", extrapolate=False):
         """Surface point at a span station and chord fraction, vectorised.
 
@@ -203,15 +226,18 @@ class WingLike:
         """
         s, f = np.broadcast_arrays(np.asarray(span, float), np.asarray(fraction, float))
         k, lam = self._bracket(s, extrapolate)
-        off = interpolate_chordwise(self.x_over_c, self._offsets(side), f.ravel(),
-                                    self.chordwise)  # (n_sections, m)
-        cols = np.arange(f.size)
-        kk = k.ravel()
+        if side not in ("upper", "lower"):
+            raise GeometryError(f"side must be 'upper' or 'lower', found {side!r}", self.name)
+        t, coefs = self._chord_cubics(side)
+        fr, kk = f.ravel(), k.ravel()
+        i = np.minimum(np.maximum(np.searchsorted(t, fr, side="right") - 1, 0), t.size - 2)
+        h = (fr - t[i])
         pts = []
         for kk_i in (kk, kk + 1):
+            c3, c2, c1, c0 = coefs[:, i, kk_i]
             p = self.le[kk_i].copy()
-            p[:, 0] += self.chord[kk_i] * f.ravel()
-            p[:, self.thickness_axis] += off[kk_i, cols]
+            p[:, 0] += self.chord[kk_i] * fr
+            p[:, self.thickness_axis] += ((c3 * h + c2) * h + c1) * h + c0
             pts.append(p)
         w = lam.ravel()[:, None]
         return ((1.0 - w) * pts[0] + w * pts[1]).reshape(s.shape + (3,))
