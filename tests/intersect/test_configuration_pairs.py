@@ -146,3 +146,22 @@ def test_wing_gets_curves_where_pylons_meet_it():
         assert np.abs(curve[:, 2] - z).max() < 1e-9
         assert any(np.allclose(curve, n) or np.allclose(curve[::-1], n)
                    for n in geo.networks["wing lower"])
+
+
+def test_a_canard_is_intersected_and_bounds_the_fuselage_split():
+    cfg = example()
+    x = np.array([0.0, 30.0, 60.0, 100.0])
+    canard = WingLike("canard 1", "canard", [[38.0, 2.0, 0.8], [52.0, 14.0, 1.2]], [18.0, 6.0],
+                      x, [[0.0, 1.6, 1.2, 0.0]] * 2, camber=None, mirrored=True)
+    cfg = cfg.with_component(canard)
+    found = find_intersections(cfg)
+    pair = next(p for p in found if p.a == "canard 1")
+    assert (pair.b, pair.role) == ("body", "body")
+    body = cfg["body"]
+    for inter in found[pair]:
+        assert inter.found.all()
+        assert np.abs(body.radial_error(inter.points)).max() < 1e-9 * body.length
+    geo = jc.complete(cfg, "cubic")
+    seams = [s for s in geo.log if s.startswith("seam body") and "canard 1" in s]
+    assert len(seams) == 2 and all(float(s.rsplit("max gap ", 1)[1]) < 1e-12 for s in seams)
+    assert {"canard 1 upper", "canard 1 lower"} <= set(geo.networks)
