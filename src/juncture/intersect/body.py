@@ -67,7 +67,10 @@ class BodyIntersection:
 
 def _error_function(body):
     if isinstance(body, CircularBody):
-        return body.radial_error
+        def error(points):
+            return body.radial_error(points)
+        error.value_and_gradient = body.radial_error_and_gradient
+        return error
     if isinstance(body, ArbitraryBody):
         return body.signed_distance
     raise GeometryError(f"cannot intersect with a {type(body).__name__}", body)
@@ -93,7 +96,7 @@ def _u_axis(wing, body, lines):
     return (c - s[0]) / (s[1] - s[0])
 
 
-def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24, hint=None):
+def intersect_body(wing: WingLike, body, side="upper", samples_per_section=None, hint=None):
     """Intersection line of one surface of ``wing`` with ``body`` (TM-4406 eqs 4-6).
 
     Parameters
@@ -120,7 +123,7 @@ def intersect_body(wing: WingLike, body, side="upper", samples_per_section=24, h
                       None if hint is None else (hint,))[0]
 
 
-def intersect_body_both(wing: WingLike, body, samples_per_section=24, hints=None):
+def intersect_body_both(wing: WingLike, body, samples_per_section=None, hints=None):
     """Upper and lower intersections in one vectorised solve: ``(upper, lower)``.
 
     ``hints`` is ``(upper_u, lower_u)`` from a previous solve, or None.
@@ -141,7 +144,13 @@ def _intersect(wing, body, sides, samples_per_section, hints):
                             wing.name, wing.n_sections)
     u_low = np.minimum(_u_axis(wing, body, lines), 0.0)
     hint = None if hints is None else np.concatenate([np.asarray(h, float) for h in hints])
-    bound = getattr(body, "error_lipschitz_between", None) or body.error_lipschitz
+    local = getattr(body, "error_lipschitz_between", None)
+    if local is not None:
+        def bound(pa, pb):
+            return local(pa, pb)
+        bound.global_bound = body.error_lipschitz
+    else:
+        bound = body.error_lipschitz
     cr = find_crossings(lines, error, u_low, samples_per_section, lipschitz=bound, hint=hint)
     out = []
     m = wing.n_stations

@@ -106,6 +106,60 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
     return a, b, fa, fb, it
 
 
+def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter):
+    """Bracketed Newton: like :func:`_illinois` but stepping with the error's gradient.
+
+    ``error.value_and_gradient(points) -> (e, grad)``. Each iterate is the Newton step from
+    the last point when it falls inside the current bracket, else the regula-falsi point;
+    the bracket shrinks with every evaluation, so the iteration cannot leave it. Stops when
+    the Newton correction is below rtol (quadratic convergence: about 3 iterations).
+    Returns (u, f(u), iterations).
+    """
+    m, n = lines.shape[:2]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
+    fu = np.zeros(m)
+    it = 0
+    rows = np.flatnonzero(act)
+    tol = max(rtol, 1e-9)
+    while rows.size:
+        it += 1
+        if it > max_iter:
+            raise ConvergenceError(f"lofting-line intersection did not converge in {max_iter} "
+                                   "iterations")
+        ur = u[rows]
+        lr = lines[rows]
+        e, g = error.value_and_gradient(polyline_points(lr, ur[:, None])[:, 0])
+        fu[rows] = e
+        k = np.minimum(np.maximum(ur.astype(int), 0), n - 2)
+        k = np.where(ur < 0, 0, k)
+        idx = np.arange(rows.size)
+        slope = np.einsum("ij,ij->i", g, lr[idx, k + 1] - lr[idx, k])
+        out = e > 0
+        ar = np.where(out, ur, a[rows])
+        br = np.where(out, b[rows], ur)
+        far = np.where(out, e, fa[rows])
+        fbr = np.where(out, fb[rows], e)
+        a[rows], b[rows], fa[rows], fb[rows] = ar, br, far, fbr
+        with np.errstate(invalid="ignore", divide="ignore"):
+            step = e / slope
+        nxt = ur - step
+        inside = np.isfinite(nxt) & ((nxt - ar) * (nxt - br) < 0)
+        scale = np.maximum(1.0, np.abs(ur))
+        # Once the correction is below 1e-9 the Newton iterate is exact to ~1e-18 (quadratic
+        # convergence): take it without another evaluation (the caller measures the final
+        # residual anyway).
+        done = (np.abs(step) <= tol * scale) | (e == 0) | (np.abs(br - ar) <= rtol * scale)
+        need = ~inside & ~done
+        if need.any():  # Newton left the bracket: regula falsi there instead
+            with np.errstate(invalid="ignore", divide="ignore"):
+                rf = br[need] - fbr[need] * (br[need] - ar[need]) / (fbr[need] - far[need])
+            nxt[need] = np.where(np.isfinite(rf), rf, 0.5 * (ar[need] + br[need]))
+        u[rows] = np.where(done & ~inside, ur, nxt)
+        rows = rows[~done]
+    return u, fu, it
+
+
 def _brackets_dense(lines, error, u_low, samples_per_section, rows):
     m, n = lines.shape[:2]
     u_top = float(n - 1)
@@ -181,7 +235,15 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
     pts = polyline_points(lines, knots)
     e = _call(error, pts, line_rows)
     seg_len = np.linalg.norm(np.diff(pts, axis=1), axis=-1)  # (m, n)
-    bound = _bound(lipschitz, pts[:, :-1], pts[:, 1:])
+    overall = getattr(lipschitz, "global_bound", None)
+    if callable(lipschitz) and overall is not None:
+        # The global bound clears most segments at once; local bounds only for the rest.
+        bound = np.full(seg_len.shape, float(overall))
+        near = (e[:, :-1] <= 0) | (e[:, 1:] <= 0) | (e[:, :-1] + e[:, 1:] <= bound * seg_len)
+        if near.any():
+            bound[near] = lipschitz(pts[:, :-1][near], pts[:, 1:][near])
+    else:
+        bound = _bound(lipschitz, pts[:, :-1], pts[:, 1:])
     maybe = (e[:, :-1] <= 0) | (e[:, 1:] <= 0) | (e[:, :-1] + e[:, 1:] <= bound * seg_len)
     rows, segs = np.nonzero(maybe)
     found = np.zeros(m, bool)
@@ -249,7 +311,7 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
     return found, a, b, fa, fb, n_cross
 
 
-def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_iter=200,
+def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, max_iter=200,
                    lipschitz=None, hint=None, hint_width=0.05):
     """Where each extended lofting line first meets a surface, coming inboard from the tip.
 
@@ -264,14 +326,17 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
         with the line index of each row of points.
     u_low : (m,) float or float
         How far inboard to search (section coordinate, usually < 0: beyond the root).
-    samples_per_section : int
-        Bracketing density in a segment that may hold a crossing; two crossings closer than
-        1/samples of a section are seen as none (never mis-solved).
+    samples_per_section : int, optional
+        Bracketing density in a segment that may hold a crossing: default 6 with a
+        ``lipschitz`` bound (where the bisection of suspect intervals finds any grazing
+        crossing) and 24 without (then two crossings closer than 1/24 of a section are
+        seen as none, never mis-solved).
     rtol : float
         Relative tolerance on u (times max(1, |u|)).
     lipschitz : float or callable, optional
         A bound on |d error / d length| along a line, or ``bound(pa, pb)`` giving one per
-        segment pa -> pb. Given, only segments that may hold a crossing are sampled densely
+        segment pa -> pb (with an attribute ``global_bound``, used first to clear segments).
+        Given, only segments that may hold a crossing are sampled densely
         (exact screening, much faster); otherwise every segment.
     hint : (m,) float, optional
         Previous crossings (e.g. of the same wing on a slightly changed body). Where
@@ -284,6 +349,8 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
     """
     lines = np.asarray(lines, float)
     m = lines.shape[0]
+    if samples_per_section is None:
+        samples_per_section = 24 if lipschitz is None else 6
     u_low = np.broadcast_to(np.asarray(u_low, float), (m,)).copy()
     todo = np.ones(m, bool)
     found = np.zeros(m, bool)
@@ -308,15 +375,18 @@ def find_crossings(lines, error, u_low, samples_per_section=24, rtol=1e-13, max_
             res = _brackets_screened(lines[r], error, u_low[r], lipschitz,
                                      samples_per_section, r)
         found[r], a[r], b[r], fa[r], fb[r], n_cross[r] = res
-    a, b, fa, fb, it = _illinois(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
-    # The end with the smaller residual (both are within rtol in u).
-    u = np.where(np.abs(fa) < np.abs(fb), a, b)
+    if hasattr(error, "value_and_gradient"):
+        u, _, it = _newton(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
+    else:
+        a, b, fa, fb, it = _illinois(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
+        # The end with the smaller residual (both are within rtol in u).
+        u = np.where(np.abs(fa) < np.abs(fb), a, b)
     u = np.where(found, u, np.nan)
     pts = polyline_points(lines, np.where(found, u, 0.0)[:, None])[:, 0]
     pts[~found] = np.nan
     res_ = np.full(m, np.nan)
     if found.any():
-        res_[found] = np.abs(np.minimum(np.abs(fa), np.abs(fb))[found])
+        res_[found] = np.abs(_call(error, pts[found][:, None], np.flatnonzero(found))[:, 0])
     return Crossings(u, pts, found, n_cross, it, res_)
 
 

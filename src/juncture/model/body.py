@@ -206,21 +206,22 @@ class CircularBody:
         """(global bound, sparse range-max levels) of |r'| + |c'|, built on first use."""
         if self._lipschitz is None:
             interp, x = self._interp, self.x
-            # |grad e| <= 1 + |r'| + |c'| for e = |p_yz - c(x)| - r(x); slopes sampled densely
-            # on every piece (the derivative of a cubic piece is a quadratic: 9 samples are
-            # ample, and the 1.25 margin covers what falls between them).
-            t = np.linspace(0.0, 1.0, 9)
-            lo = interp.breaks
-            hi = np.append(lo[1:], x[-1])
-            xs = lo[:, None] + t * (hi - lo)[:, None]
-            piece = np.abs(interp(xs, 1)).max(axis=1).sum(axis=-1)  # (n_pieces,)
+            # |grad e| <= 1 + |r'| + |c'| for e = |p_yz - c(x)| - r(x). On each cubic piece
+            # the slope is a quadratic in the local variable: its largest magnitude is at an
+            # end or at the vertex, so the per-piece maximum is exact (no sampling margin).
+            c3, c2, c1 = interp.coefs[0], interp.coefs[1], interp.coefs[2]  # (n_pc, cols)
+            h = np.append(np.diff(interp.breaks), x[-1] - interp.breaks[-1])[:, None]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                tv = np.where(c3 != 0, -c2 / (3 * c3), 0.0)
+            tv = np.clip(np.nan_to_num(tv), 0.0, h)
+            slope = [np.abs(3 * c3 * t * t + 2 * c2 * t + c1) for t in (0.0, h, tv)]
+            piece = np.max(slope, axis=0).sum(axis=-1) * (1.0 + 1e-9)  # (n_pieces,)
             # Sparse table for range maxima: level k holds max(piece[i : i + 2^k]).
             levels = [piece]
             while (1 << len(levels)) <= piece.size:
                 prev, w = levels[-1], 1 << (len(levels) - 1)
                 levels.append(np.maximum(prev[:-w], prev[w:]))
-            object.__setattr__(self, "_lipschitz",
-                               (float(1.25 * (1.0 + piece.max())), levels))
+            object.__setattr__(self, "_lipschitz", (float(1.0 + piece.max()), levels))
         return self._lipschitz
 
     @property
@@ -232,8 +233,8 @@ class CircularBody:
         """Local bound on |d radial_error / d length| on the segments pa -> pb, vectorised.
 
         Uses the largest |r'| + |c'| over the body pieces the segment's x range spans
-        (1.25 times 1 + that slope), so a segment along the cylindrical mid-body is not
-        penalised by the steep nose.
+        (1 + that slope), so a segment along the cylindrical mid-body is not penalised by
+        the steep nose.
         """
         xa = np.asarray(pa, float)[..., 0] - self.origin[0]
         xb = np.asarray(pb, float)[..., 0] - self.origin[0]
@@ -253,7 +254,7 @@ class CircularBody:
                 w = 1 << lev
                 best[sel] = np.maximum(tab[np.minimum(ia[sel], tab.size - 1)],
                                        tab[np.clip(ib[sel] - w + 1, 0, tab.size - 1)])
-        return 1.25 * (1.0 + best)
+        return 1.0 + best
 
     def radial_error(self, points):
         """TM-4406 eq 6: distance from the local section centre minus r(x), vectorised.
@@ -268,6 +269,27 @@ class CircularBody:
         r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
         d = np.hypot(p[..., 1] - self.origin[1], p[..., 2] - (rc[..., 1] + self.origin[2]))
         return d - r
+
+    def radial_error_and_gradient(self, points):
+        """:meth:`radial_error` and its gradient with respect to the point, vectorised.
+
+        Returns (e (...), grad (..., 3)): de/dy, de/dz are the unit radial direction in the
+        section, de/dx = -(unit z) c'(x) - r'(x).
+        """
+        p = np.asarray(points, float)
+        xq = p[..., 0] - self.origin[0]
+        rc = self._interp(xq)
+        drc = self._interp(xq, 1)
+        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
+        dr = np.where(inside, drc[..., 0], 0.0)
+        dy = p[..., 1] - self.origin[1]
+        dz = p[..., 2] - (rc[..., 1] + self.origin[2])
+        d = np.hypot(dy, dz)
+        safe = np.where(d > 0, d, 1.0)
+        ny, nz = np.where(d > 0, dy / safe, 0.0), np.where(d > 0, dz / safe, 0.0)
+        grad = np.stack([-nz * drc[..., 1] - dr, ny, nz], axis=-1)
+        return d - r, grad
 
     def signed_distance(self, points, samples=2001):
         """Signed distance from points (..., 3) to the surface, negative inside [deck length].

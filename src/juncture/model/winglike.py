@@ -165,8 +165,15 @@ class WingLike:
         return pts
 
     def lofting_lines(self, side: Side = "upper"):
-        """(n_stations, n_sections, 3): lofting line j joins the points of station j, root first."""
-        return np.swapaxes(self.section_points(side), 0, 1)
+        """(n_stations, n_sections, 3): lofting line j joins the points of station j, root first.
+
+        Read-only (computed once per side and kept: the root finders ask for it often)."""
+        key = ("lines", side)
+        if key not in self._poly:
+            lines = np.ascontiguousarray(np.swapaxes(self.section_points(side), 0, 1))
+            lines.flags.writeable = False
+            self._poly[key] = lines
+        return self._poly[key]
 
     def _bracket(self, span, extrapolate):
         s = np.asarray(span, dtype=float)
