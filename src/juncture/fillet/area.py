@@ -164,14 +164,15 @@ class Compensation:
     fillets: tuple
 
 
-def reduced_body(body, x, area_removed, densify=32, exposure=None):
+def reduced_body(body, x, area_removed, densify=None, exposure=None):
     """``body`` with the fillet stations ``x`` added and pi r^2 reduced by ``area_removed``.
 
     The removed area is interpolated linearly between the stations (zero outside them) and
     taken off at every station of the new body, so the new radius at a fillet station x_j is
     exactly sqrt(r0(x_j)^2 - A_j / pi). ``densify`` extra stations between neighbouring fillet
-    stations (32: the drag of the PDAS deck's three-station case needs that many near the
-    kinks where the fillet starts) make the body's area follow that interpolation in between
+    stations (default max(4, 96 / stations): the PDAS deck's three fillet stations need 32
+    near the kinks where the fillet starts, 30 stations need 4) make the body's area follow
+    that interpolation in between
     (with only the fillet stations, the body's cubic radius would bulge between them and the
     area distribution, so the wave drag, would not be restored). Camber is kept. Raises
     GeometryError if the fillet needs more area than the body has.
@@ -185,6 +186,8 @@ def reduced_body(body, x, area_removed, densify=32, exposure=None):
     order = np.argsort(x)
     xs, a = np.asarray(x, float)[order], np.asarray(area_removed, float)[order]
     xg = body.x_global
+    if densify is None:
+        densify = max(4, int(np.ceil(96 / max(xs.size, 1))))
     if densify and xs.size > 1:
         t = np.arange(1, densify + 1) / (densify + 1)
         # Also the body intervals just outside the fillet range, where nothing is removed:
