@@ -135,13 +135,6 @@ def _intersect(wing, body, sides, samples_per_section, hints):
     per_side = [wing.lofting_lines(side) for side in sides]
     lines = np.concatenate(per_side)  # (n_sides * n_stations, n_sections, 3)
     error = _error_function(body)
-    tip_err = error(lines[:, -1])
-    if np.any(tip_err <= 0):
-        j = int(np.argmax(tip_err <= 0))
-        side = sides[j // wing.n_stations]
-        raise GeometryError(f"the tip of {side} lofting line {j % wing.n_stations + 1} lies "
-                            f"inside {body.name}: the surface never leaves the body",
-                            wing.name, wing.n_sections)
     u_low = np.minimum(_u_axis(wing, body, lines), 0.0)
     hint = None if hints is None else np.concatenate([np.asarray(h, float) for h in hints])
     local = getattr(body, "error_lipschitz_between", None)
@@ -152,6 +145,13 @@ def _intersect(wing, body, sides, samples_per_section, hints):
     else:
         bound = body.error_lipschitz
     cr = find_crossings(lines, error, u_low, samples_per_section, lipschitz=bound, hint=hint)
+    tip_inside = cr.start_error <= 0  # NaN (a hinted line) compares False
+    if np.any(tip_inside):
+        j = int(np.argmax(tip_inside))
+        side = sides[j // wing.n_stations]
+        raise GeometryError(f"the tip of {side} lofting line {j % wing.n_stations + 1} lies "
+                            f"inside {body.name}: the surface never leaves the body",
+                            wing.name, wing.n_sections)
     out = []
     m = wing.n_stations
     for k, side in enumerate(sides):
@@ -159,7 +159,11 @@ def _intersect(wing, body, sides, samples_per_section, hints):
         pts, found, u = cr.points[sl], cr.found[sl], cr.u[sl]
         theta = np.full(m, np.nan)
         if found.any():
-            theta[found] = _body_angle(body, pts[found])
+            if cr.gradient is not None:  # circular body: the unit radial direction
+                g = cr.gradient[sl][found]
+                theta[found] = np.arctan2(g[:, 2], g[:, 1])
+            else:
+                theta[found] = _body_angle(body, pts[found])
         name = f"{wing.name}/{body.name} {side_label(wing, side)}"
         log = []
         for j in np.flatnonzero(cr.n_crossings[sl] >= 2):

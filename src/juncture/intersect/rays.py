@@ -63,6 +63,10 @@ class Crossings:
         Illinois iterations used to reach the tolerance.
     residual : (m,) float
         |error| at the crossing [deck length].
+    start_error : (m,) float
+        The error at each line's starting end (the tip); NaN where a hint was used.
+    gradient : (m, 3) float or None
+        The error's gradient at the crossings, when the error function provides one.
     """
 
     u: np.ndarray
@@ -71,6 +75,8 @@ class Crossings:
     n_crossings: np.ndarray
     iterations: int
     residual: np.ndarray
+    start_error: np.ndarray = None
+    gradient: np.ndarray = None
 
 
 def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
@@ -167,7 +173,7 @@ def _brackets_dense(lines, error, u_low, samples_per_section, rows):
     n_samp = int(np.ceil(float(span.max()) * samples_per_section)) + 2
     grid = u_top - np.linspace(0.0, 1.0, n_samp)[None, :] * (u_top - u_low)[:, None]
     e = _call(error, polyline_points(lines, grid), rows)
-    return _first_entering(grid, e)
+    return _first_entering(grid, e) + (e[:, 0],)
 
 
 def _first_entering(grid, e):
@@ -253,7 +259,7 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
     fb = np.zeros(m)
     n_cross = np.zeros(m, int)
     if rows.size == 0:
-        return found, a, b, fa, fb, n_cross
+        return found, a, b, fa, fb, n_cross, e[:, 0]
     u0, u1 = knots[rows, segs], knots[rows, segs + 1]
     # As dense as the full scan: samples_per_section per unit of u on the longest candidate
     # (the inboard extension can span several sections).
@@ -308,7 +314,7 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
     found[first_rows] = True
     a[first_rows], b[first_rows] = a_[pick], b_[pick]
     fa[first_rows], fb[first_rows] = fa_[pick], fb_[pick]
-    return found, a, b, fa, fb, n_cross
+    return found, a, b, fa, fb, n_cross, e[:, 0]
 
 
 def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, max_iter=200,
@@ -356,6 +362,7 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
     found = np.zeros(m, bool)
     a, b, fa, fb = (np.zeros(m) for _ in range(4))
     n_cross = np.zeros(m, int)
+    start_err = np.full(m, np.nan)
     if hint is not None:
         h = np.asarray(hint, float)
         ok_h = np.isfinite(h)
@@ -374,7 +381,7 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
         else:
             res = _brackets_screened(lines[r], error, u_low[r], lipschitz,
                                      samples_per_section, r)
-        found[r], a[r], b[r], fa[r], fb[r], n_cross[r] = res
+        found[r], a[r], b[r], fa[r], fb[r], n_cross[r], start_err[r] = res
     if hasattr(error, "value_and_gradient"):
         u, _, it = _newton(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
     else:
@@ -385,9 +392,16 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
     pts = polyline_points(lines, np.where(found, u, 0.0)[:, None])[:, 0]
     pts[~found] = np.nan
     res_ = np.full(m, np.nan)
+    grad = None
     if found.any():
-        res_[found] = np.abs(_call(error, pts[found][:, None], np.flatnonzero(found))[:, 0])
-    return Crossings(u, pts, found, n_cross, it, res_)
+        if hasattr(error, "value_and_gradient"):
+            e_f, g_f = error.value_and_gradient(pts[found])
+            grad = np.full((m, 3), np.nan)
+            grad[found] = g_f
+        else:
+            e_f = _call(error, pts[found][:, None], np.flatnonzero(found))[:, 0]
+        res_[found] = np.abs(e_f)
+    return Crossings(u, pts, found, n_cross, it, res_, start_err, grad)
 
 
 def _bound(lipschitz, pa, pb):
