@@ -77,6 +77,15 @@ class _Piecewise:
         self.coefs = np.concatenate(coefs, axis=1)  # (4, n_pieces, cols)
         self.ncols = columns.shape[1]
 
+    def value_and_slope(self, xq):
+        """Values and x-derivatives at xq in one pass (shared coefficient gather)."""
+        xq = np.asarray(xq, dtype=float)
+        k = np.minimum(np.maximum(np.searchsorted(self.breaks, xq, side="right") - 1, 0),
+                       self.breaks.size - 1)
+        t = (xq - self.breaks[k])[..., None]
+        c3, c2, c1, c0 = self.coefs[:, k]
+        return ((c3 * t + c2) * t + c1) * t + c0, (3 * c3 * t + 2 * c2) * t + c1
+
     def __call__(self, xq, nu=0):
         xq = np.asarray(xq, dtype=float)
         # np.minimum/maximum: np.clip's overhead shows in the root finders' inner loops.
@@ -221,7 +230,10 @@ class CircularBody:
             while (1 << len(levels)) <= piece.size:
                 prev, w = levels[-1], 1 << (len(levels) - 1)
                 levels.append(np.maximum(prev[:-w], prev[w:]))
-            object.__setattr__(self, "_lipschitz", (float(1.0 + piece.max()), levels))
+            table = np.zeros((len(levels), piece.size))  # padded: one fancy index per query
+            for lev, row in enumerate(levels):
+                table[lev, :row.size] = row
+            object.__setattr__(self, "_lipschitz", (float(1.0 + piece.max()), table))
         return self._lipschitz
 
     @property
@@ -243,17 +255,9 @@ class CircularBody:
                      brk.size - 1)
         ib = np.clip(np.searchsorted(brk, np.maximum(xa, xb), side="right") - 1, 0,
                      brk.size - 1)
-        levels = self._slope_table()[1]
-        span = ib - ia + 1
-        k = np.minimum(np.floor(np.log2(span)).astype(int), len(levels) - 1)
-        best = np.zeros(np.shape(ia))
-        for lev in range(len(levels)):  # a handful of levels, each vectorised
-            sel = k == lev
-            if sel.any():
-                tab = levels[lev]
-                w = 1 << lev
-                best[sel] = np.maximum(tab[np.minimum(ia[sel], tab.size - 1)],
-                                       tab[np.clip(ib[sel] - w + 1, 0, tab.size - 1)])
+        table = self._slope_table()[1]
+        k = np.minimum(np.floor(np.log2(ib - ia + 1)).astype(int), table.shape[0] - 1)
+        best = np.maximum(table[k, ia], table[k, ib - (1 << k) + 1])
         return 1.0 + best
 
     def radial_error(self, points):
@@ -278,8 +282,7 @@ class CircularBody:
         """
         p = np.asarray(points, float)
         xq = p[..., 0] - self.origin[0]
-        rc = self._interp(xq)
-        drc = self._interp(xq, 1)
+        rc, drc = self._interp.value_and_slope(xq)
         inside = (xq >= self.x[0]) & (xq <= self.x[-1])
         r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
         dr = np.where(inside, drc[..., 0], 0.0)
