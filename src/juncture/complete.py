@@ -10,7 +10,7 @@ are passed through as their own networks.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
@@ -107,7 +107,6 @@ class CompleteOptions:
     pairs: tuple = ()
     empennage_sections: int = 4
     min_lofting_lines: int = 0
-    extra: dict = field(default_factory=dict)
 
 
 def sharp_fillet(inter):
