@@ -25,8 +25,8 @@ import numpy as np
 
 from ..errors import DeckError
 from ..geometry import Geometry
+from ._freeformat import decode, parse_real, quote, unquote
 from ._registry import atomic_output, register_format, to_geometry
-from .lawgs import _decode, _parse_real, _quote, _unquote
 
 __all__ = ["read", "write"]
 
@@ -57,11 +57,11 @@ def write(obj, path):
         If the title or a network name holds a line break.
     """
     geo = to_geometry(obj)
-    out = [f"{_MAGIC} {_VERSION}", "TITLE " + _quote(geo.title, "title")]
+    out = [f"{_MAGIC} {_VERSION}", "TITLE " + quote(geo.title, "Hess title")]
     for k, (name, net) in enumerate(geo.networks.items(), start=1):
         nl, npt = net.shape[:2]
         plane = geo.symmetry.get(name, "none")
-        out.append(f"NETWORK {k} {_quote(name, 'network name')} {nl} {npt} {plane}")
+        out.append(f"NETWORK {k} {quote(name, 'Hess network name')} {nl} {npt} {plane}")
         for i in range(nl):
             out.append(f"NLINE {i + 1}")
             out.extend(f"{x!r} {y!r} {z!r}" for x, y, z in net[i].tolist())
@@ -106,7 +106,7 @@ def _network_line(lines, k):
     index, _, rest = rest.strip().partition(" ")
     if index != str(k):
         raise lines.error(no, f"expected network index {k}, found {index!r}")
-    quoted = _unquote(rest)
+    quoted = unquote(rest)
     if quoted is None:
         raise lines.error(no, f"expected a quoted network name after 'NETWORK {k}', found "
                           f"{rest.strip()!r}")
@@ -135,11 +135,11 @@ def _points(lines, name, i, npt):
         pass
     for j, (no, line) in enumerate(rows):
         words = line.split()
-        vals = [_parse_real(w) for w in words]
+        vals = [parse_real(w) for w in words]
         if len(words) != 3 or any(v is None or not math.isfinite(v) for v in vals):
             raise lines.error(no, f"expected point {j + 1} of n-line {i} of network {name!r} "
                               f"as three finite numbers 'x y z', found {line!r}")
-    return np.array([[_parse_real(w) for w in line.split()] for _, line in rows], dtype=float)
+    return np.array([[parse_real(w) for w in line.split()] for _, line in rows], dtype=float)
 
 
 def read(path):
@@ -165,7 +165,7 @@ def read(path):
     """
     try:
         with open(path, "rb") as fh:
-            text = _decode(fh.read())
+            text = decode(fh.read())
     except OSError as exc:
         raise DeckError(f"cannot open file: {exc.strerror}", path=path) from None
     lines = _Lines(text, path)
@@ -179,7 +179,7 @@ def read(path):
     title = ""
     if lines.k < len(lines.items) and lines.items[lines.k][1].upper().startswith("TITLE"):
         no, line = lines.take("TITLE")
-        quoted = _unquote(line[5:])
+        quoted = unquote(line[5:])
         title = quoted[0] if quoted else line[5:].strip()
     networks, symmetry = {}, {}
     k = 1
@@ -208,7 +208,7 @@ def read(path):
 
 def _sniff(head):
     """The first significant line is ``HESS NETWORK LIST <version>``."""
-    for line in _decode(head).splitlines():
+    for line in decode(head).splitlines():
         s = line.strip()
         if s and not s.startswith("#"):
             return s.upper().startswith(_MAGIC)

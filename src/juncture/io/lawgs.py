@@ -21,12 +21,11 @@ and 2); codes 2 and 3 are UNVERIFIED (recalled from TM-85767, formats.md section
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
-from ..errors import DeckError, GeometryError
+from ..errors import DeckError
 from ..geometry import Geometry, mirror_points
+from ._freeformat import FAST, decode, line_tokens, quote, unquote
 from ._registry import atomic_output, register_format, to_geometry
 
 __all__ = ["read", "write", "placement_matrix"]
@@ -38,94 +37,9 @@ _HEADER_FIELDS = ("NOBJ", "NLINE", "NPNT", "ISYML", "RX", "RY", "RZ", "TX", "TY"
 #: Header values used after a list-directed ``/`` (ends the header early), from ISYML on.
 _HEADER_DEFAULTS = (0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 0)
 
-# Fortran list-directed input: a real is a signed mantissa with an optional exponent, whose
-# letter (E, D) may be left out when the exponent has a sign ("1.5+2" = 150).
-_REAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][+-]?\d+|[+-]\d+)?")
-_REPEAT = re.compile(r"(\d+)\*(.*)")
-_FIELD = re.compile(r"[^\s,]+")
-_FAST = re.compile(r"[\s,0-9.eE+-]*")
-
-
-class _Token:
-    """One list-directed item: ``value`` (float, or None for ``/``), where it was, its text."""
-
-    __slots__ = ("value", "line", "columns", "text")
-
-    def __init__(self, value, line, columns, text):
-        self.value, self.line, self.columns, self.text = value, line, columns, text
-
-
-def _parse_real(text):
-    """Float of a Fortran real literal, or None if ``text`` is not one."""
-    if not _REAL.fullmatch(text):
-        return None
-    s = text.replace("d", "e").replace("D", "e")
-    if "e" not in s and "E" not in s:
-        s = re.sub(r"(?<=[\d.])([+-])", r"e\1", s)
-    return float(s)
-
-
-def _line_tokens(line, line_no, path):
-    """List-directed items of one line: ``_Token`` iterable; ``r*c`` expanded, ``/`` kept.
-
-    Items are parsed lazily, so text after the last item a READ needs is never looked at
-    (as in Fortran). A bad item raises DeckError naming the line, the columns and the token.
-    """
-    if _FAST.fullmatch(line):
-        try:
-            return [_Token(float(m.group()), line_no, (m.start() + 1, m.end()), m.group())
-                    for m in _FIELD.finditer(line)]
-        except ValueError:
-            pass  # "1.5+2" and the like: the careful path below
-    return _careful_tokens(line, line_no, path)
-
-
-def _careful_tokens(line, line_no, path):
-    for m in _FIELD.finditer(line):
-        text, cols = m.group(), (m.start() + 1, m.end())
-        if text.startswith("/"):
-            yield _Token(None, line_no, cols, "/")
-            return
-        count, item = 1, text
-        rep = _REPEAT.fullmatch(text)
-        if rep:
-            count, item = int(rep.group(1)), rep.group(2)
-            if count < 1 or item == "":
-                raise DeckError(f"null values ({text!r}) are not supported; give every value",
-                                path=path, line=line_no, columns=cols)
-        value = _parse_real(item)
-        if value is None:
-            raise DeckError(f"expected a number, found {text!r}", path=path, line=line_no,
-                            columns=cols)
-        for _ in range(count):
-            yield _Token(value, line_no, cols, text)
-
-
-def _unquote(line):
-    """Text inside the leading quotes of ``line`` ('' or "" doubled inside), and what follows.
-
-    Returns ``(text, rest)``, or ``None`` if the line does not start with a quote.
-    """
-    s = line.lstrip()
-    if not s or s[0] not in "'\"":
-        return None
-    q = s[0]
-    i, chars = 1, []
-    while i < len(s):
-        if s[i] == q:
-            if s[i + 1:i + 2] == q:
-                chars.append(q)
-                i += 2
-                continue
-            return "".join(chars), s[i + 1:]
-        chars.append(s[i])
-        i += 1
-    return "".join(chars), ""  # unterminated quote: take the rest of the line
-
-
 def _is_numbers(line):
     try:
-        return bool(list(_line_tokens(line, 0, None)))
+        return bool(list(line_tokens(line, 0, None)))
     except DeckError:
         return False
 
@@ -158,10 +72,10 @@ class _Cursor:
                                     path=self.path, line=len(self.lines))
                 text, no = self.lines[self.i], self.i + 1
                 self.i += 1
-                if _unquote(text) is not None:
+                if unquote(text) is not None:
                     raise DeckError(f"expected {what(count)}, found the object name "
                                     f"{text.strip()} after {len(got)}", path=self.path, line=no)
-            for tok in _line_tokens(text, no, self.path):
+            for tok in line_tokens(text, no, self.path):
                 if tok.value is None:
                     if allow_slash:
                         return got
@@ -186,18 +100,18 @@ class _Cursor:
                                 path=self.path, line=len(self.lines))
             text, no = self.lines[self.i], self.i + 1
             self.i += 1
-            if _unquote(text) is not None:
+            if unquote(text) is not None:
                 raise DeckError(f"expected {what(count)}, found the object name "
                                 f"{text.strip()} after {len(got)}", path=self.path, line=no)
             starts.append((len(got), no, text))
             need = count - len(got)
-            if _FAST.fullmatch(text):
+            if FAST.fullmatch(text):
                 try:
                     got.extend([float(w) for w in text.replace(",", " ").split()][:need])
                     continue
                 except ValueError:
                     pass
-            for tok in _line_tokens(text, no, self.path):
+            for tok in line_tokens(text, no, self.path):
                 if tok.value is None:
                     raise DeckError(f"'/' ends the input early: expected {what(count)}, "
                                     f"found {len(got)}", path=self.path, line=no,
@@ -208,9 +122,9 @@ class _Cursor:
         return np.array(got, dtype=float), starts
 
     def token_of(self, index, starts):
-        """The ``_Token`` of value ``index`` of a :meth:`values` read."""
+        """The ``Token`` of value ``index`` of a :meth:`values` read."""
         first, no, text = max(s for s in starts if s[0] <= index)
-        return list(_line_tokens(text, no, self.path))[index - first]
+        return list(line_tokens(text, no, self.path))[index - first]
 
 
 def _cos_sin_deg(angle):
@@ -302,13 +216,6 @@ def _unique(name, used):
     return out
 
 
-def _decode(raw):
-    try:
-        return raw.decode("utf-8")
-    except UnicodeDecodeError:
-        return raw.decode("latin-1")
-
-
 def read(path):
     """Read a LaWGS file into a Geometry of global points.
 
@@ -353,7 +260,7 @@ def read(path):
     """
     try:
         with open(path, "rb") as fh:
-            text = _decode(fh.read())
+            text = decode(fh.read())
     except OSError as exc:
         raise DeckError(f"cannot open file: {exc.strerror}", path=path) from None
     lines = text.replace("\x1a", "").splitlines()
@@ -361,14 +268,14 @@ def read(path):
     if not cur.next_nonblank():
         raise DeckError("empty file: expected a LaWGS title record", path=path)
     title_line = lines[cur.i]
-    quoted = _unquote(title_line)
+    quoted = unquote(title_line)
     title = (quoted[0] if quoted else title_line).strip()
     cur.i += 1
     networks, symmetry, used, log = {}, {}, set(), []
     while cur.next_nonblank():
         line, no = lines[cur.i], cur.i + 1
         cur.i += 1
-        quoted = _unquote(line)
+        quoted = unquote(line)
         if quoted is not None:
             raw, rest = quoted
             rest = rest if rest.strip() else None
@@ -395,12 +302,6 @@ def read(path):
                    f"{head['NPNT']}, ISYML {head['ISYML']}, ISYMG {head['ISYMG']}")
     return Geometry(networks=networks, symmetry=symmetry, title=title,
                     log=(f"read LaWGS {path}",) + tuple(log))
-
-
-def _quote(text, what):
-    if "\n" in text or "\r" in text:
-        raise GeometryError(f"a LaWGS {what} must be one line, found {text!r}", component=text)
-    return "'" + text.replace("'", "''") + "'"
 
 
 def _fmt(values, digits):
@@ -434,11 +335,11 @@ def write(obj, path, *, digits=None):
         If the title or a network name holds a line break.
     """
     geo = to_geometry(obj)
-    out = [_quote(geo.title, "title")]
+    out = [quote(geo.title, "LaWGS title")]
     for k, (name, net) in enumerate(geo.networks.items(), start=1):
         nl, npt = net.shape[:2]
         isymg = _CODE_OF_PLANE.get(geo.symmetry.get(name), 0)
-        out.append(_quote(name, "object name"))
+        out.append(quote(name, "LaWGS object name"))
         out.append(f"{k} {nl} {npt} 0 0 0 0 0 0 0 1 1 1 {isymg}")
         words = _fmt(net.reshape(-1), digits)
         out.extend(" " + " ".join(words[i:i + 6]) for i in range(0, len(words), 6))
@@ -449,11 +350,11 @@ def write(obj, path, *, digits=None):
 
 def _sniff(head):
     """A title record, then a quoted object name, then a line starting with 3 integers."""
-    lines = [s for s in _decode(head).splitlines() if s.strip()]
-    if len(lines) < 3 or _unquote(lines[1]) is None:
+    lines = [s for s in decode(head).splitlines() if s.strip()]
+    if len(lines) < 3 or unquote(lines[1]) is None:
         return False
     try:
-        toks = list(_line_tokens(lines[2], 3, None))
+        toks = list(line_tokens(lines[2], 3, None))
     except DeckError:
         return False
     return len(toks) >= 3 and all(t.value is not None and t.value == int(t.value)

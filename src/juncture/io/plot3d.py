@@ -22,8 +22,8 @@ import numpy as np
 
 from ..errors import DeckError
 from ..geometry import Geometry
+from ._freeformat import decode, line_tokens
 from ._registry import atomic_output, register_format, to_geometry
-from .lawgs import _decode, _line_tokens
 
 __all__ = ["read", "write"]
 
@@ -39,7 +39,7 @@ def _all_numbers(text, path):
         pass  # D exponents, r*c, or a bad token: read line by line for the exact place
     vals = []
     for no, line in enumerate(text.splitlines(), start=1):
-        for tok in _line_tokens(line, no, path):
+        for tok in line_tokens(line, no, path):
             if tok.value is None:
                 raise DeckError("'/' is not allowed in a Plot3D file", path=path, line=no,
                                 columns=tok.columns)
@@ -123,7 +123,7 @@ def read(path):
     if b"\x00" in raw[:4096]:
         raise DeckError("a binary (unformatted) file: juncture reads formatted (ASCII) Plot3D "
                         "only", path=path)
-    v = _all_numbers(_decode(raw), path)
+    v = _all_numbers(decode(raw), path)
     if not np.all(np.isfinite(v)):
         raise DeckError(f"number out of range (number {int(np.argmin(np.isfinite(v))) + 1} of "
                         "the file)", path=path)
