@@ -22,6 +22,7 @@ import numpy as np
 
 from .errors import JunctureWarning
 from .intersect.body import side_label
+from .intersect.winglike import wing_parameters
 
 __all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike",
            "trace_curve", "add_trace_curves"]
@@ -141,17 +142,6 @@ def nacelle_network(pod, pylon_inters, n_points=None):
     return pod.point(xs[:, None], theta)
 
 
-def _wing_params(wing, points):
-    """(span, chord fraction) of points lying on a wing-type surface (sections at constant y)."""
-    s = points[:, 1]
-    st = wing.span_stations
-    k = np.clip(np.searchsorted(st, s, side="right") - 1, 0, wing.n_sections - 2)
-    lam = (s - st[k]) / (st[k + 1] - st[k])
-    x_le = wing.le[k, 0] + lam * (wing.le[k + 1, 0] - wing.le[k, 0])
-    chord = wing.chord[k] + lam * (wing.chord[k + 1] - wing.chord[k])
-    return s, (points[:, 0] - x_le) / chord
-
-
 def trace_curve(wing, side, line):
     """A curve on ``wing``'s ``side`` at its chord stations that traces an intersection line.
 
@@ -163,7 +153,7 @@ def trace_curve(wing, side, line):
     accounting problem TM-4607 describes). Returns (n_stations, 3).
     """
     ok = np.all(np.isfinite(line), axis=1)
-    y, f = _wing_params(wing, line[ok])
+    y, f = wing_parameters(wing, line[ok])
     order = np.argsort(f)
     fs = wing.x_over_c / 100.0
     span = np.interp(fs, f[order], y[order])

@@ -17,7 +17,24 @@ from ..errors import GeometryError
 from .body import BodyIntersection, side_label
 from .rays import find_crossings
 
-__all__ = ["surface_height", "intersect_winglike"]
+__all__ = ["surface_height", "wing_parameters", "intersect_winglike"]
+
+
+def wing_parameters(wing, points):
+    """(span, chord fraction) of points (..., 3) in a wing with sections at constant y.
+
+    The leading edge and chord are lofted linearly in span (extended beyond root and tip);
+    the fraction is NaN where the chord is zero.
+    """
+    p = np.asarray(points, float)
+    s = p[..., 1]
+    st = wing.span_stations
+    k = np.clip(np.searchsorted(st, s, side="right") - 1, 0, wing.n_sections - 2)
+    lam = (s - st[k]) / (st[k + 1] - st[k])
+    x_le = wing.le[k, 0] + lam * (wing.le[k + 1, 0] - wing.le[k, 0])
+    chord = wing.chord[k] + lam * (wing.chord[k + 1] - wing.chord[k])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return s, np.where(chord > 0, (p[..., 0] - x_le) / chord, np.nan)
 
 
 def surface_height(wing, points, side):
@@ -32,14 +49,8 @@ def surface_height(wing, points, side):
         raise GeometryError("the surface to meet must have sections at constant y (a wing, "
                             "canard or tail)", wing.name)
     p = np.asarray(points, float)
-    s = p[..., 1]
+    s, f = wing_parameters(wing, p)
     st = wing.span_stations
-    k = np.clip(np.searchsorted(st, s, side="right") - 1, 0, wing.n_sections - 2)
-    lam = (s - st[k]) / (st[k + 1] - st[k])
-    x_le = wing.le[k, 0] + lam * (wing.le[k + 1, 0] - wing.le[k, 0])
-    chord = wing.chord[k] + lam * (wing.chord[k + 1] - wing.chord[k])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        f = np.where(chord > 0, (p[..., 0] - x_le) / chord, np.nan)
     inside = np.isfinite(f) & (f >= 0) & (f <= 1) & (s >= st[0]) & (s <= st[-1])
     fc = np.where(np.isfinite(f), np.clip(f, 0.0, 1.0), 0.0)
     z = wing.point(s, fc, side, extrapolate=True)[..., 2]

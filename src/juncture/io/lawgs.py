@@ -67,14 +67,7 @@ class _Cursor:
             if pending:
                 text, no = pending.pop(), self.i  # the name line, already consumed
             else:
-                if self.i >= len(self.lines):
-                    raise DeckError(f"expected {what(count)}, file ended after {len(got)}",
-                                    path=self.path, line=len(self.lines))
-                text, no = self.lines[self.i], self.i + 1
-                self.i += 1
-                if unquote(text) is not None:
-                    raise DeckError(f"expected {what(count)}, found the object name "
-                                    f"{text.strip()} after {len(got)}", path=self.path, line=no)
+                text, no = self._next_data_line(what, count, len(got))
             for tok in line_tokens(text, no, self.path):
                 if tok.value is None:
                     if allow_slash:
@@ -87,6 +80,18 @@ class _Cursor:
                     break
         return got
 
+    def _next_data_line(self, what, count, have):
+        """The next line and its number; DeckError at the end of the file or at a name."""
+        if self.i >= len(self.lines):
+            raise DeckError(f"expected {what(count)}, file ended after {have}",
+                            path=self.path, line=len(self.lines))
+        text, no = self.lines[self.i], self.i + 1
+        self.i += 1
+        if unquote(text) is not None:
+            raise DeckError(f"expected {what(count)}, found the object name {text.strip()} "
+                            f"after {have}", path=self.path, line=no)
+        return text, no
+
     def values(self, count, what):
         """Read ``count`` numbers as a float array (the fast path of :meth:`numbers`).
 
@@ -95,14 +100,7 @@ class _Cursor:
         """
         got, starts = [], []
         while len(got) < count:
-            if self.i >= len(self.lines):
-                raise DeckError(f"expected {what(count)}, file ended after {len(got)}",
-                                path=self.path, line=len(self.lines))
-            text, no = self.lines[self.i], self.i + 1
-            self.i += 1
-            if unquote(text) is not None:
-                raise DeckError(f"expected {what(count)}, found the object name "
-                                f"{text.strip()} after {len(got)}", path=self.path, line=no)
+            text, no = self._next_data_line(what, count, len(got))
             starts.append((len(got), no, text))
             need = count - len(got)
             if FAST.fullmatch(text):

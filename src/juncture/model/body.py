@@ -463,6 +463,20 @@ class ArbitraryBody:
         zc = sec[..., 1].mean(axis=-1)
         return np.stack([np.zeros_like(zc), zc], axis=-1)
 
+    def _project(self, p):
+        """Points (q, 3) onto the segments of their interpolated half-sections.
+
+        Returns the segment starts ``a`` and steps ``d`` (q, m-1, 2), the points in the
+        section plane ``q`` (q, 1, 2) with |y| (the section is symmetric), the clamped segment
+        parameters ``t`` and squared distances ``dist2`` (q, m-1).
+        """
+        sec = self._sections_at(p[:, 0])  # (q, m, 2)
+        a, d = sec[:, :-1], np.diff(sec, axis=1)
+        q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
+        len2 = np.maximum((d * d).sum(-1), 1e-300)
+        t = np.clip(((q - a) * d).sum(-1) / len2, 0.0, 1.0)
+        return a, d, q, t, ((q - a - t[..., None] * d) ** 2).sum(-1)
+
     def parameter_of(self, points):
         """Normalised arc length s (0 bottom, 1 top) of points on the surface: the inverse of
         :meth:`point` (the nearest point of the interpolated section, projected).
@@ -471,13 +485,7 @@ class ArbitraryBody:
         """
         p = np.asarray(points, float)
         shape = p.shape[:-1]
-        p = p.reshape(-1, 3)
-        sec = self._sections_at(p[:, 0])  # (q, m, 2)
-        a, d = sec[:, :-1], np.diff(sec, axis=1)
-        q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
-        len2 = np.maximum((d * d).sum(-1), 1e-300)
-        t = np.clip(((q - a) * d).sum(-1) / len2, 0.0, 1.0)
-        dist2 = ((q - a - t[..., None] * d) ** 2).sum(-1)
+        _, _, _, t, dist2 = self._project(p.reshape(-1, 3))
         j = np.argmin(dist2, axis=1)
         tj = t[np.arange(len(j)), j]
         return ((j + tj) / (self.resample - 1)).reshape(shape)
@@ -505,12 +513,8 @@ class ArbitraryBody:
         p = np.asarray(points, float)
         shape = p.shape[:-1]
         p = p.reshape(-1, 3)
-        sec = self._sections_at(p[:, 0])  # (q, m, 2)
-        a, d = sec[:, :-1], np.diff(sec, axis=1)
-        q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
-        len2 = np.maximum((d * d).sum(-1), 1e-300)
-        t = np.clip(((q - a) * d).sum(-1) / len2, 0.0, 1.0)
-        dist = np.sqrt((((q - a - t[..., None] * d) ** 2).sum(-1)).min(-1))
+        a, d, q, _, dist2 = self._project(p)
+        dist = np.sqrt(dist2.min(-1))
         # Inside test: crossing number against the half outline closed along y = 0.
         ya, za = a[..., 0], a[..., 1]
         yb, zb = ya + d[..., 0], za + d[..., 1]
