@@ -201,19 +201,27 @@ def reduced_body(body, x, area_removed, densify=None, exposure=None):
     else:
         stations = xs
     tol = 1e-12 * max(body.length, 1.0)
-    new_x, seg_sizes, start = [], [], 0
+    new_x, seg_sizes, base, start, piece = [], [], [], 0, 0
     for size in body.segments:
         sx = xg[start:start + size]
         inner = stations[(stations > sx[0] + tol) & (stations < sx[-1] - tol)]
         inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
             if inner.size else inner
         merged = np.union1d(sx, inner)
+        # The original radius and camber with their slopes, from this segment's own pieces
+        # (one-sided at a joint where the next segment starts at the same x).
+        rc, drc = body._interp.value_and_slope(merged - body.origin[0],
+                                               (piece, piece + size - 2))
         new_x.append(merged)
         seg_sizes.append(merged.size)
+        base.append((rc, drc))
         start += size
+        piece += size - 1
     xn = np.concatenate(new_x)
+    rc = np.concatenate([b[0] for b in base])
+    drc = np.concatenate([b[1] for b in base])
     removed = np.interp(xn, xs, a, left=0.0, right=0.0)
-    r0 = body.radius_at(xn)
+    r0 = np.maximum(rc[:, 0], 0.0)
     lcov = np.zeros_like(xn) if exposure is None else np.asarray(exposure(xn), float)
     # pi d^2 - (2 pi r0 - L) d + A = 0 for the radius reduction d = r0 - r (smaller root).
     b = 2 * np.pi * r0 - lcov
@@ -226,12 +234,48 @@ def reduced_body(body, x, area_removed, densify=None, exposure=None):
     den = b + np.sqrt(disc)
     # The stable form of (b - sqrt(disc)) / (2 pi); nothing to remove where the body is a point.
     d = np.where(den > 0, 2 * removed / np.where(den > 0, den, 1.0), 0.0)
-    return CircularBody(body.name, xn - body.origin[0], r0 - d,
-                        body.center_at(xn)[:, 1] - body.origin[2], body.origin,
-                        tuple(seg_sizes), body.mirrored, body.axial, body.points_per_section)
+    # Hermite pieces with the original slopes less the reduction's: where nothing is removed
+    # the new body is the original cubic exactly, and everywhere it depends smoothly on the
+    # removed areas (a PCHIP rebuild would switch its slope limiter on a cylindrical
+    # mid-body, and kink the area iteration's map).
+    slopes = drc.copy()
+    start = 0
+    for size in seg_sizes:
+        sl = slice(start, start + size)
+        slopes[sl, 0] -= np.gradient(d[sl], xn[sl]) if size > 2 else \
+            np.diff(d[sl]) / np.diff(xn[sl])
+        start += size
+    return CircularBody(body.name, xn - body.origin[0], r0 - d, rc[:, 1], body.origin,
+                        tuple(seg_sizes), body.mirrored, body.axial, body.points_per_section,
+                        slopes)
 
 
-def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None):
+def _anderson(history):
+    """Next iterate of the fixed point t = G(t) by Anderson mixing over ``history``.
+
+    ``history`` holds (t_k, G(t_k)) pairs, oldest first. With one pair this is plain
+    substitution; with more, the step combines the last residuals f = G(t) - t to make the
+    linearised residual smallest (type-II Anderson, mixing 1): a secant method in all
+    stations at once, which sees how one station's area depends on its neighbours'.
+    """
+    t, g = (np.asarray(v, float) for v in history[-1])
+    f = g - t
+    if len(history) < 2:
+        return g
+    ts = np.array([h[0] for h in history])
+    fs = np.array([h[1] - h[0] for h in history])
+    d_t, d_f = np.diff(ts, axis=0).T, np.diff(fs, axis=0).T  # (n, m)
+    scale = np.linalg.norm(d_f, axis=0)
+    usable = scale > 1e-14 * max(np.linalg.norm(f), 1e-300)
+    if not usable.any():
+        return g
+    d_t, d_f, scale = d_t[:, usable], d_f[:, usable], scale[usable]
+    gamma = np.linalg.lstsq(d_f / scale, f, rcond=1e-12)[0] / scale
+    return g - (d_t + d_f) @ gamma
+
+
+def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None,
+              memory=3):
     """Shrink the body until body area + added area equals the original area (TM-4406).
 
     TM-4406 compensates the fillet's area (eq 14) only. When the body shrinks, the wing's
@@ -257,10 +301,6 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         surface on the plane of symmetry.
     exposure : callable, optional
         ``exposure(x) -> L``: body perimeter covered by wing-like roots at x (all of them,
-        both sides; see :func:`reduced_body`). Without it the uncovered wing root is measured
-        on the fillet stations only (from the fillet polygons).
-    exposure : callable, optional
-        ``exposure(x) -> L``: body perimeter covered by wing-like roots at x (all of them,
         both sides; see :func:`reduced_body`). The fillets are then measured on their
         stations and the uncovered roots everywhere on the re-designed body, so the whole
         cross-section keeps its area between the fillet stations too. Without it the
@@ -271,21 +311,26 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     Compensation
         ``area_fillet`` is the added area of all ``sides`` fillets at each station.
 
+    memory : int
+        Past iterates the Anderson step combines.
+
     Notes
     -----
-    Each iteration removes an area t from the original body (not from the previous iterate),
-    so the problem is the fixed point t = A(body(t)) on the vector of station areas. The first
-    step is the paper's substitution; after it a secant step per station solves
-    A(body(t)) - t = 0 (the uncovered wing root couples neighbouring stations: plain or
-    Aitken-accelerated substitution then oscillates, 29 iterations on the bundled transport
-    against 8). The intersections are warm-started from the previous iterate while the body
-    only shrinks.
+    Each iteration removes an area t from the original body (not from the previous iterate)
+    at fixed nodes (the stations on the original body), so the problem is the root of
+    F(t) = A(body(t)) - given(body(t)), the added area against what the body gives up, both
+    measured at the current stations. The first step is the paper's substitution; after it
+    Anderson mixing solves F = 0 across all stations (a station's fillet also depends on
+    its neighbours: the lower fillet line of the same lofting line meets the body at another
+    x, and the stations move as the body shrinks). The re-designed body is a smooth function
+    of t (Hermite pieces), so the iteration is too. The intersections are warm-started from
+    the previous iterate while the body only shrinks.
     """
     current = body
     first_met = None
     history = []
     hints = None
-    removed = 0.0  # the first body is the original one
+    nodes = t = None
     for it in range(1, max_iterations + 1):
         parts = make_fillets(current, hints)
         x, only, a_f = fillet_added_area(current, *parts[2:], *parts[:2], reference_body=body)
@@ -303,24 +348,22 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         if met.all():
             return Compensation(current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi), r_now,
                                 residual, first_met, it, parts)
-        # The unknown t per station: the area given up for the fillets (and, without an
-        # exposure model, for the uncovered root too). Per-station secant on G(t) - t, G
-        # measured on the body built with t; plain substitution on the first step and where
-        # the secant is undefined.
+        # The unknown: the area t given up for the fillets (and, without an exposure model,
+        # for the uncovered root too) at fixed nodes, the first iteration's stations. The
+        # stations move a little as the body shrinks (the lofting lines meet it further
+        # inboard), so the residual is measured where they are now, on what the body really
+        # gives up there; with the nodes fixed it is a function of t alone, which the
+        # Anderson step needs (moving the nodes with the stations held it to linear
+        # convergence, ratio ~0.06).
         g = only if exposure is not None else a_f
-        history.append((removed, g))
-        target = g
-        if len(history) >= 2:
-            (t0, g0), (t1, g1) = history[-2], history[-1]
-            f0, f1 = g0 - t0, g1 - t1
-            with np.errstate(divide="ignore", invalid="ignore"):
-                sec = t1 - f1 * (t1 - t0) / (f1 - f0)
-            ok = np.isfinite(sec) & (np.abs(f1 - f0) > 1e-15 * np.maximum(np.abs(g1), 1e-300))
-            target = np.where(ok, sec, g)
-        removed = target
-        current = reduced_body(body, x, target, exposure=exposure)
+        given = a0 - a_b - (0.0 if exposure is None else exposure(x) * (r_orig - r_now))
+        if nodes is None:
+            nodes, t = x, given
+        history.append((t, t + g - given))
+        t = _anderson(history[-(memory + 1):])
+        current = reduced_body(body, nodes, t, exposure=exposure)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
-        hints = (parts[0].u, parts[1].u) if np.all(target >= 0) else None
+        hints = (parts[0].u, parts[1].u) if np.all(t >= 0) else None
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
                            f"iterations (worst residual {residual.max():.3g} at x = "
                            f"{x[np.argmax(residual)]:.6g})", body.name)

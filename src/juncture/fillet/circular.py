@@ -36,6 +36,24 @@ def _normals(lines, sign):
     return dp, n
 
 
+def _lipschitz(body, radius):
+    """A bound on |d error / d length| along a lofting line, or None (dense sampling).
+
+    With a constant rho the offset centre C = P + rho beta n moves with P (n and beta are
+    fixed per line and have no x part), so |grad error| <= 1 + |r'| + |c'|: the body's own
+    bound, local to the x range of each segment. A rho(x) given as a function has no known
+    slope bound, so its lines are sampled densely.
+    """
+    if callable(radius):
+        return None
+    local = body.error_lipschitz_between
+
+    def bound(pa, pb):
+        return local(pa, pb)
+    bound.global_bound = body.error_lipschitz
+    return bound
+
+
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
                     n_points=9):
     """Circular-arc fillet lines of radius ``radius`` for one surface.
@@ -84,18 +102,30 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         ln, nn, bb = lines[live], n[live], beta[live]
         k = len(ln)
 
+        offset = bb[:, None] * nn  # rho = 1: C = P + rho beta n
+
         def error(points, rows):
-            x = points[..., 0]
+            # |C - centre| - r(x) - rho beta: the body's radial error at C, less rho beta.
+            rows = np.asarray(rows)
             shape = (len(rows),) + (1,) * (points.ndim - 2)
-            rho = bb[rows].reshape(shape) * rho_of(x)
+            rho = bb[rows].reshape(shape) * rho_of(points[..., 0])
             c = points + rho[..., None] * nn[rows].reshape(shape + (3,))
-            ctr = body.center_at(x)
-            d = np.hypot(c[..., 1] - ctr[..., 0], c[..., 2] - ctr[..., 1])
-            return d - (body.radius_at(x) + rho)
+            return body.radial_error(c) - rho
 
         error.row_aware = True
-        u_low = np.minimum(inter.u[live] - 1.0, -1.0)
-        cr = find_crossings(ln, error, u_low)
+        if not callable(radius):
+            # Constant rho: C moves with P, so the gradient is the body's at C.
+            def value_and_gradient(points, rows):
+                step = float(radius) * offset[rows]
+                e, g = body.radial_error_and_gradient(points + step)
+                return e - float(radius) * bb[rows], g
+            error.value_and_gradient = value_and_gradient
+
+        # At I the centre C = I + rho beta n is within r + rho beta of the axis (equal only
+        # when n is radial): I is never outside, so the crossing coming inboard from the tip
+        # is found before it and the search stops there.
+        u_low = np.where(inter.found[live], inter.u[live], -1.0)
+        cr = find_crossings(ln, error, u_low, lipschitz=_lipschitz(body, radius))
         log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "
                    f"{k} lofting lines in {cr.iterations} iterations")
         idx = np.flatnonzero(live)

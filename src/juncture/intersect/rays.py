@@ -115,7 +115,8 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
 def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter):
     """Bracketed Newton: like :func:`_illinois` but stepping with the error's gradient.
 
-    ``error.value_and_gradient(points) -> (e, grad)``. Each iterate is the Newton step from
+    ``error.value_and_gradient(points) -> (e, grad)`` (with the rows too for a row-aware
+    error, as in :func:`find_crossings`). Each iterate is the Newton step from
     the last point when it falls inside the current bracket, else the regula-falsi point;
     the bracket shrinks with every evaluation, so the iteration cannot leave it. Stops when
     the Newton correction is below rtol (quadratic convergence: about 3 iterations).
@@ -135,7 +136,7 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter):
                                    "iterations")
         ur = u[rows]
         lr = lines[rows]
-        e, g = error.value_and_gradient(polyline_points(lr, ur[:, None])[:, 0])
+        e, g = _call_gradient(error, polyline_points(lr, ur[:, None])[:, 0], rows)
         fu[rows] = e
         k = np.minimum(np.maximum(ur.astype(int), 0), n - 2)
         k = np.where(ur < 0, 0, k)
@@ -329,7 +330,9 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
         ``error(points (..., 3)) -> (...)``: negative inside the other surface, positive
         outside, zero on it (TM-4406 eq 6 for a circular body). If the function has an
         attribute ``row_aware = True`` it is called as ``error(points (k, j, 3), rows (k,))``
-        with the line index of each row of points.
+        with the line index of each row of points. An attribute
+        ``value_and_gradient(points) -> (e, grad (..., 3))`` (row-aware likewise) makes the
+        bracket closure a bracketed Newton iteration instead of Illinois regula falsi.
     u_low : (m,) float or float
         How far inboard to search (section coordinate, usually < 0: beyond the root).
     samples_per_section : int, optional
@@ -395,7 +398,7 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
     grad = None
     if found.any():
         if hasattr(error, "value_and_gradient"):
-            e_f, g_f = error.value_and_gradient(pts[found])
+            e_f, g_f = _call_gradient(error, pts[found], np.flatnonzero(found))
             grad = np.full((m, 3), np.nan)
             grad[found] = g_f
         else:
@@ -416,3 +419,10 @@ def _call(error, points, rows):
     if getattr(error, "row_aware", False):
         return error(points, rows)
     return error(points)
+
+
+def _call_gradient(error, points, rows):
+    """``error.value_and_gradient`` on points (k, 3) of lines ``rows`` (k,)."""
+    if getattr(error, "row_aware", False):
+        return error.value_and_gradient(points, rows)
+    return error.value_and_gradient(points)

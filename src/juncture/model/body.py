@@ -50,6 +50,16 @@ def _segment_layout(x, segments, name):
     return seg, bounds
 
 
+def _hermite_coefficients(x, y, dy):
+    """(4, n - 1, cols) cubic coefficients (highest first, local x - x_k) of the Hermite
+    interpolant through values y and slopes dy at x (n, cols)."""
+    h = np.diff(x)[:, None]
+    delta = np.diff(y, axis=0) / h
+    s0, s1 = dy[:-1], dy[1:]
+    return np.stack([(s0 + s1 - 2 * delta) / (h * h), (3 * delta - 2 * s0 - s1) / h, s0,
+                     y[:-1]])
+
+
 class _Piecewise:
     """Segment-wise interpolant of several columns of data along x, as one piecewise cubic.
 
@@ -60,11 +70,13 @@ class _Piecewise:
     the ends the first / last cubic extrapolates.
     """
 
-    def __init__(self, x, columns, bounds, method):
+    def __init__(self, x, columns, bounds, method, slopes=None):
         breaks, coefs = [], []
         for a, b in bounds:
             xs, ys = x[a:b], columns[a:b]
-            if method == "pchip":
+            if slopes is not None:
+                c = _hermite_coefficients(xs, ys, slopes[a:b])
+            elif method == "pchip":
                 with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
                     pp = PchipInterpolator(xs, ys, axis=0)  # flat pieces divide by 0 inside
                 c = pp.c  # (4, n-1, cols), local coordinate x - x_k
@@ -77,11 +89,15 @@ class _Piecewise:
         self.coefs = np.concatenate(coefs, axis=1)  # (4, n_pieces, cols)
         self.ncols = columns.shape[1]
 
-    def value_and_slope(self, xq):
-        """Values and x-derivatives at xq in one pass (shared coefficient gather)."""
+    def value_and_slope(self, xq, pieces=None):
+        """Values and x-derivatives at xq in one pass (shared coefficient gather).
+
+        ``pieces = (first, last)`` restricts the evaluation to those pieces (one segment's:
+        its end station then takes that segment's one-sided slope).
+        """
         xq = np.asarray(xq, dtype=float)
-        k = np.minimum(np.maximum(np.searchsorted(self.breaks, xq, side="right") - 1, 0),
-                       self.breaks.size - 1)
+        lo, hi = (0, self.breaks.size - 1) if pieces is None else pieces
+        k = np.minimum(np.maximum(np.searchsorted(self.breaks, xq, side="right") - 1, lo), hi)
         t = (xq - self.breaks[k])[..., None]
         c3, c2, c1, c0 = self.coefs[:, k]
         return ((c3 * t + c2) * t + c1) * t + c0, (3 * c3 * t + 2 * c2) * t + c1
@@ -128,6 +144,10 @@ class CircularBody:
     points_per_section : tuple of int, optional
         Points per half cross-section of each segment in the output networks (the deck's
         NRADX); 19 if not given.
+    slopes : (n, 2) float, optional
+        dr/dx and d(camber)/dx at each station. Given, radius and camber are interpolated by
+        cubic Hermite pieces with these slopes instead of ``axial`` (a re-designed body keeps
+        its original's shape between stations this way, and depends smoothly on its radii).
     """
 
     name: str
@@ -139,6 +159,7 @@ class CircularBody:
     mirrored: bool = False
     axial: AxialInterpolation = "pchip"
     points_per_section: tuple = None
+    slopes: np.ndarray = None
     _interp: object = None
     _lipschitz: float = None
 
@@ -165,10 +186,15 @@ class CircularBody:
                 raise GeometryError(f"points_per_section {pps} must give a count >= 2 for each "
                                     f"of the {len(seg)} segments", name)
         object.__setattr__(self, "points_per_section", pps)
+        slopes = None
+        if self.slopes is not None:
+            slopes = frozen(self.slopes, (x.size, 2), name, "slopes (dr/dx, dc/dx per station)")
+            check_finite(slopes, name, "slopes")
         for field, value in (("x", x), ("radius", r), ("camber", c), ("origin", o),
-                             ("segments", seg), ("mirrored", bool(self.mirrored))):
+                             ("segments", seg), ("mirrored", bool(self.mirrored)),
+                             ("slopes", slopes)):
             object.__setattr__(self, field, value)
-        interp = _Piecewise(x, np.stack([r, c], axis=1), bounds, self.axial)
+        interp = _Piecewise(x, np.stack([r, c], axis=1), bounds, self.axial, slopes)
         object.__setattr__(self, "_interp", interp)
 
 
