@@ -169,17 +169,17 @@ def _extended_roots(cfg, body, attached, log):
     return cfg
 
 
-def _root_exposure(cfg, wing, body0, sides, found):
+def _root_exposure(cfg, wing, body0, sides, found, wing_lines):
     """``L(x)``: perimeter of the original fuselage covered by wing-like roots at x.
+
+    ``wing_lines`` are the main wing's (upper, lower) intersections with ``body0``.
 
     The main wing's root spans its upper to lower intersection angles; every other wing-like
     component on the fuselage (a tail, a canard, a fin) likewise, each counted once per copy.
     Shrinking the fuselage by d at x uncovers about L(x) d of their area (TM-4406 ignores
     this; compensating it keeps the whole cross-section's area, not just the fillet's).
     """
-    from .intersect import intersect_body_both
-
-    lines = [(sides, intersect_body_both(wing, body0))]
+    lines = [(sides, wing_lines)]
     for pair, (up, lo) in found.items():
         if pair.b == body0.name:
             comp = cfg[pair.a]
@@ -450,8 +450,10 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
 
         known = find_intersections(_with_empennage(cfg, wing, opts), explicit=opts.pairs,
                                    skip={(wing.name, body0.name)})
+        first = make(body0)
         comp = _keep_area(body0, make, tolerance=opts.tolerance, sides=sides,
-                          exposure=_root_exposure(cfg, wing, body0, sides, known))
+                          exposure=_root_exposure(cfg, wing, body0, sides, known, first[:2]),
+                          initial=first)
         body = comp.body
         iu, il, fu, fl = comp.fillets
         stations = {"x": comp.x, "area_original": comp.area_original,

@@ -108,8 +108,7 @@ def fillet_added_area(body, upper, lower, upper_inter, lower_inter, reference_bo
     """
     fu, fl = upper.points, lower.points
     x = fu[:, 0, 0]
-    ctr = body.center_at(x)
-    r = body.radius_at(x)
+    ctr, r = body.section_at(x)
     poly = np.concatenate([fu[..., 1:], fl[:, ::-1, 1:]], axis=1)  # (m, 2k, 2) in y-z
     i_u = np.where(upper_inter.found[:, None], upper_inter.points, upper.start)[:, 1:]
     i_l = np.where(lower_inter.found[:, None], lower_inter.points, lower.start)[:, 1:]
@@ -121,7 +120,7 @@ def fillet_added_area(body, upper, lower, upper_inter, lower_inter, reference_bo
     fillet = a_poly - outside(wing, ctr, r)
     if reference_body is None:
         return x, fillet
-    total = a_poly - outside(wing, reference_body.center_at(x), reference_body.radius_at(x))
+    total = a_poly - outside(wing, *reference_body.section_at(x))
     return x, fillet, total
 
 
@@ -275,7 +274,7 @@ def _anderson(history):
 
 
 def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None,
-              memory=3):
+              memory=3, initial=None):
     """Shrink the body until body area + added area equals the original area (TM-4406).
 
     TM-4406 compensates the fillet's area (eq 14) only. When the body shrinks, the wing's
@@ -313,6 +312,8 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
 
     memory : int
         Past iterates the Anderson step combines.
+    initial : tuple, optional
+        ``make_fillets(body, None)`` if the caller already has it.
 
     Notes
     -----
@@ -332,13 +333,19 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     hints = None
     nodes = t = None
     for it in range(1, max_iterations + 1):
-        parts = make_fillets(current, hints)
-        x, only, a_f = fillet_added_area(current, *parts[2:], *parts[:2], reference_body=body)
-        only, a_f = sides * only, sides * a_f
-        r_orig, r_now = body.radius_at(x), current.radius_at(x)
+        parts = initial if (it == 1 and initial is not None) else make_fillets(current, hints)
         if exposure is not None:
             # Fillets by their polygons; every uncovered root by its covered perimeter.
-            a_f = only + exposure(x) * (r_orig - r_now)
+            x, only = fillet_added_area(current, *parts[2:], *parts[:2])
+            r_orig, r_now = body.radius_at(x), current.radius_at(x)
+            covered = exposure(x)
+            only = sides * only
+            a_f = only + covered * (r_orig - r_now)
+        else:
+            x, only, a_f = fillet_added_area(current, *parts[2:], *parts[:2],
+                                             reference_body=body)
+            only, a_f = sides * only, sides * a_f
+            r_orig, r_now = body.radius_at(x), current.radius_at(x)
         a0 = np.pi * r_orig ** 2
         a_b = np.pi * r_now ** 2
         residual = np.abs(a_b + a_f - a0) / np.where(a0 > 0, a0, 1.0)
@@ -356,7 +363,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         # Anderson step needs (moving the nodes with the stations held it to linear
         # convergence, ratio ~0.06).
         g = only if exposure is not None else a_f
-        given = a0 - a_b - (0.0 if exposure is None else exposure(x) * (r_orig - r_now))
+        given = a0 - a_b - (0.0 if exposure is None else covered * (r_orig - r_now))
         if nodes is None:
             nodes, t = x, given
         history.append((t, t + g - given))

@@ -21,6 +21,7 @@ import numpy as np
 
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, find_crossings
+from ..intersect.rays import SurfaceBound
 from .cubic import FilletLines, blend_factor
 
 __all__ = ["circular_fillet"]
@@ -46,12 +47,7 @@ def _lipschitz(body, radius):
     """
     if callable(radius):
         return None
-    local = body.error_lipschitz_between
-
-    def bound(pa, pb):
-        return local(pa, pb)
-    bound.global_bound = body.error_lipschitz
-    return bound
+    return SurfaceBound(body)
 
 
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import GeometryError
 from ..model import ArbitraryBody, CircularBody, WingLike
-from .rays import find_crossings
+from .rays import SurfaceBound, find_crossings
 
 __all__ = ["BodyIntersection", "intersect_body", "intersect_body_both", "side_label"]
 
@@ -137,11 +137,8 @@ def _intersect(wing, body, sides, samples_per_section, hints):
     error = _error_function(body)
     u_low = np.minimum(_u_axis(wing, body, lines), 0.0)
     hint = None if hints is None else np.concatenate([np.asarray(h, float) for h in hints])
-    local = getattr(body, "error_lipschitz_between", None)
-    if local is not None:
-        def bound(pa, pb):
-            return local(pa, pb)
-        bound.global_bound = body.error_lipschitz
+    if hasattr(body, "error_lipschitz_between"):
+        bound = SurfaceBound(body)
     else:
         bound = body.error_lipschitz
     cr = find_crossings(lines, error, u_low, samples_per_section, lipschitz=bound, hint=hint)

@@ -18,7 +18,26 @@ import numpy as np
 
 from ..errors import ConvergenceError
 
-__all__ = ["polyline_points", "find_crossings", "Crossings"]
+__all__ = ["polyline_points", "find_crossings", "Crossings", "SurfaceBound"]
+
+
+class SurfaceBound:
+    """Lipschitz bound of a surface's error function for :func:`find_crossings`.
+
+    Callable as ``bound(pa, pb)``: a bound per segment pa -> pb, from the surface's
+    ``error_lipschitz_between``; ``global_bound`` (``error_lipschitz``) is only evaluated
+    when a search needs it, so a warm-started solve on a new body never builds its table.
+    """
+
+    def __init__(self, surface):
+        self._surface = surface
+
+    def __call__(self, pa, pb):
+        return self._surface.error_lipschitz_between(pa, pb)
+
+    @property
+    def global_bound(self):
+        return self._surface.error_lipschitz
 
 
 def polyline_points(lines, u):
@@ -112,7 +131,7 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
     return a, b, fa, fb, it
 
 
-def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter):
+def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
     """Bracketed Newton: like :func:`_illinois` but stepping with the error's gradient.
 
     ``error.value_and_gradient(points) -> (e, grad)`` (with the rows too for a row-aware
@@ -120,11 +139,15 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter):
     the last point when it falls inside the current bracket, else the regula-falsi point;
     the bracket shrinks with every evaluation, so the iteration cannot leave it. Stops when
     the Newton correction is below rtol (quadratic convergence: about 3 iterations).
+    ``start`` (optional, NaN where absent) replaces the first regula-falsi point: a warm start
+    close to the root (a previous solution) saves an iteration or two.
     Returns (u, f(u), iterations).
     """
     m, n = lines.shape[:2]
     with np.errstate(invalid="ignore", divide="ignore"):
         u = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
+    if start is not None:
+        u = np.where(np.isfinite(start) & ((start - a) * (start - b) < 0), start, u)
     fu = np.zeros(m)
     it = 0
     rows = np.flatnonzero(act)
@@ -386,7 +409,8 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
                                      samples_per_section, r)
         found[r], a[r], b[r], fa[r], fb[r], n_cross[r], start_err[r] = res
     if hasattr(error, "value_and_gradient"):
-        u, _, it = _newton(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
+        start = None if hint is None else np.where(found, np.asarray(hint, float), np.nan)
+        u, _, it = _newton(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter, start)
     else:
         a, b, fa, fb, it = _illinois(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
         # The end with the smaller residual (both are within rtol in u).

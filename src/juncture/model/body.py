@@ -222,6 +222,18 @@ class CircularBody:
         yc = np.full_like(zc, self.origin[1] if derivative == 0 else 0.0)
         return np.stack([yc, zc], axis=-1)
 
+    def section_at(self, x):
+        """(centre (..., 2), radius (...)) at global x in one interpolation pass.
+
+        The same values as :meth:`center_at` and :meth:`radius_at` (radius 0 outside the body).
+        """
+        xq = np.asarray(x, float) - self.origin[0]
+        rc = self._interp(xq)
+        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
+        zc = rc[..., 1] + self.origin[2]
+        return np.stack([np.full_like(zc, self.origin[1]), zc], axis=-1), r
+
     def area_at(self, x):
         """Cross-sectional area pi r(x)^2 at global x [deck length^2]."""
         return np.pi * self.radius_at(x) ** 2
@@ -233,8 +245,7 @@ class CircularBody:
         Returns (..., 3).
         """
         x, theta = np.broadcast_arrays(np.asarray(x, float), np.asarray(theta, float))
-        r = self.radius_at(x)
-        c = self.center_at(x)
+        c, r = self.section_at(x)
         return np.stack([x, c[..., 0] + r * np.cos(theta), c[..., 1] + r * np.sin(theta)], -1)
 
     def _slope_table(self):
