@@ -210,7 +210,8 @@ def _fillet_maker(wing, fillet, opts, body0):
     if fillet == "circular" and rho is None:
         rho = 0.1 * float(body0.radius.max())
 
-    def make(body, hints=None):
+    def make(body, previous=None):
+        hints = None if previous is None else (previous[0].u, previous[1].u)
         iu, il = intersect_body_both(wing, body, hints=hints)
         if fillet is None:
             return iu, il, sharp_fillet(iu), _sharp_with_misses(body, il, iu)
@@ -225,8 +226,10 @@ def _fillet_maker(wing, fillet, opts, body0):
                     cubic_fillet(wing, body, il, upper_reference=iu, **kw))
         if fillet == "circular":
             kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points)
-            return (iu, il, circular_fillet(wing, body, iu, rho, **kw),
-                    circular_fillet(wing, body, il, rho, **kw))
+            up, lo = (None, None) if previous is None else (previous[2].u_end,
+                                                            previous[3].u_end)
+            return (iu, il, circular_fillet(wing, body, iu, rho, hint=up, **kw),
+                    circular_fillet(wing, body, il, rho, hint=lo, **kw))
         raise GeometryError(f"fillet must be None, 'cubic' or 'circular', found {fillet!r}")
     return make
 

@@ -52,3 +52,21 @@ def test_radius_may_vary_with_x():
     inter = intersect_body(wing, body, "upper")
     f = circular_fillet(wing, body, inter, lambda x: 0.3 + 0.02 * x, blend_length=1e-9)
     assert f.kind == "circular" and np.isfinite(f.points).all()
+
+
+def test_a_warm_started_circular_fillet_is_the_cold_one():
+    from benchmarks.geometry import benchmark_configuration
+
+    from juncture.fillet import reduced_body
+    from juncture.fillet.circular import circular_fillet
+    from juncture.intersect import intersect_body
+
+    cfg = benchmark_configuration()
+    wing, body = cfg["wing"], cfg["body"]
+    first = circular_fillet(wing, body, intersect_body(wing, body, "upper"), 0.6)
+    x = first.start[:, 0]
+    smaller = reduced_body(body, x, np.full(x.size, 0.3))
+    inter = intersect_body(wing, smaller, "upper")
+    cold = circular_fillet(wing, smaller, inter, 0.6)
+    warm = circular_fillet(wing, smaller, inter, 0.6, hint=first.u_end)
+    np.testing.assert_allclose(warm.points, cold.points, atol=1e-10)

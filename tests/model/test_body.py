@@ -115,3 +115,33 @@ def test_arbitrary_body_area_and_distance():
 def test_arbitrary_body_rejects_negative_y():
     with pytest.raises(GeometryError, match=r"body, station 2: half-section has y < 0"):
         ArbitraryBody("body", [0, 1], [_square_sections(1), -_square_sections(1)])
+
+
+def test_hermite_slopes_reproduce_a_cubic_exactly():
+    # r(x) = 1 + 0.1 x - 0.02 x^2 + 0.001 x^3 sampled with its exact slopes: Hermite pieces
+    # reproduce it everywhere (independent reference: the polynomial itself).
+    x = np.array([0.0, 1.5, 4.0, 7.0, 10.0])
+    poly = np.polynomial.Polynomial([1.0, 0.1, -0.02, 0.001])
+    cam = np.polynomial.Polynomial([0.2, -0.05, 0.003])
+    slopes = np.stack([poly.deriv()(x), cam.deriv()(x)], axis=1)
+    body = CircularBody("b", x, poly(x), cam(x), slopes=slopes)
+    xq = np.linspace(0.0, 10.0, 101)
+    np.testing.assert_allclose(body.radius_at(xq), poly(xq), atol=1e-13)
+    np.testing.assert_allclose(body.radius_at(xq, 1), poly.deriv()(xq), atol=1e-12)
+    np.testing.assert_allclose(body.center_at(xq)[:, 1], cam(xq), atol=1e-13)
+
+
+def test_section_at_matches_center_and_radius():
+    body = CircularBody("b", [0, 2, 5, 9], [0.0, 1.0, 1.2, 0.4], [0, 0.1, 0.2, 0.0],
+                        origin=(1.0, 0.5, -0.3))
+    xq = np.linspace(-1.0, 11.0, 37)
+    c, r = body.section_at(xq)
+    np.testing.assert_array_equal(c, body.center_at(xq))
+    np.testing.assert_array_equal(r, body.radius_at(xq))
+
+
+def test_bad_slopes_name_the_body():
+    with pytest.raises(GeometryError, match="slopes"):
+        CircularBody("b", [0, 1, 2], [1, 1, 1], slopes=np.zeros((2, 2)))
+    with pytest.raises(GeometryError, match="slopes"):
+        CircularBody("b", [0, 1, 2], [1, 1, 1], slopes=[[0, 0], [np.nan, 0], [0, 0]])

@@ -25,8 +25,8 @@ import numpy as np
 
 from ..errors import ConvergenceError, GeometryError
 
-__all__ = ["polygon_disk_area", "fillet_added_area", "reduced_body", "keep_area",
-           "Compensation"]
+__all__ = ["polygon_disk_area", "fillet_added_area", "reduced_body", "BodyReduction",
+           "keep_area", "Compensation"]
 
 
 def _cross(u, v):
@@ -180,97 +180,186 @@ def reduced_body(body, x, area_removed, densify=None, exposure=None):
     of wing-like components: shrinking the radius by d there uncovers about L d of their
     area, which is removed too: pi (r0^2 - r^2) = A + L (r0 - r), solved exactly per station.
     """
-    from ..model import CircularBody
-
-    order = np.argsort(x)
-    xs, a = np.asarray(x, float)[order], np.asarray(area_removed, float)[order]
-    xg = body.x_global
-    if densify is None:
-        densify = max(4, int(np.ceil(96 / max(xs.size, 1))))
-    if densify and xs.size > 1:
-        t = np.arange(1, densify + 1) / (densify + 1)
-        # Also the body intervals just outside the fillet range, where nothing is removed:
-        # there the new stations pin the body to its original radius, so its cubic does not
-        # swing away from the original next to the last re-designed station.
-        before = xg[xg < xs[0]][-1:] if (xg < xs[0]).any() else xs[:1]
-        after = xg[xg > xs[-1]][:1] if (xg > xs[-1]).any() else xs[-1:]
-        knots = np.concatenate([before, xs, after])
-        between = (knots[:-1, None] + t[None, :] * np.diff(knots)[:, None]).ravel()
-        stations = np.union1d(xs, between)
-    else:
-        stations = xs
-    tol = 1e-12 * max(body.length, 1.0)
-    new_x, seg_sizes, base, start, piece = [], [], [], 0, 0
-    for size in body.segments:
-        sx = xg[start:start + size]
-        inner = stations[(stations > sx[0] + tol) & (stations < sx[-1] - tol)]
-        inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
-            if inner.size else inner
-        merged = np.union1d(sx, inner)
-        # The original radius and camber with their slopes, from this segment's own pieces
-        # (one-sided at a joint where the next segment starts at the same x).
-        rc, drc = body._interp.value_and_slope(merged - body.origin[0],
-                                               (piece, piece + size - 2))
-        new_x.append(merged)
-        seg_sizes.append(merged.size)
-        base.append((rc, drc))
-        start += size
-        piece += size - 1
-    xn = np.concatenate(new_x)
-    rc = np.concatenate([b[0] for b in base])
-    drc = np.concatenate([b[1] for b in base])
-    removed = np.interp(xn, xs, a, left=0.0, right=0.0)
-    r0 = np.maximum(rc[:, 0], 0.0)
-    lcov = np.zeros_like(xn) if exposure is None else np.asarray(exposure(xn), float)
-    # pi d^2 - (2 pi r0 - L) d + A = 0 for the radius reduction d = r0 - r (smaller root).
-    b = 2 * np.pi * r0 - lcov
-    disc = b * b - 4 * np.pi * removed
-    if np.any(disc < 0) or np.any(r0 ** 2 - removed / np.pi < 0):
-        k = int(np.argmax((disc < 0) | (r0 ** 2 - removed / np.pi < 0)))
-        raise GeometryError(f"the fillet adds more area ({removed[k]:.4g}) than the body has "
-                            f"at x = {xn[k]:.6g} ({np.pi * r0[k] ** 2:.4g}); use a smaller "
-                            "fillet", body.name, f"x = {xn[k]:.6g}")
-    den = b + np.sqrt(disc)
-    # The stable form of (b - sqrt(disc)) / (2 pi); nothing to remove where the body is a point.
-    d = np.where(den > 0, 2 * removed / np.where(den > 0, den, 1.0), 0.0)
-    # Hermite pieces with the original slopes less the reduction's: where nothing is removed
-    # the new body is the original cubic exactly, and everywhere it depends smoothly on the
-    # removed areas (a PCHIP rebuild would switch its slope limiter on a cylindrical
-    # mid-body, and kink the area iteration's map).
-    slopes = drc.copy()
-    start = 0
-    for size in seg_sizes:
-        sl = slice(start, start + size)
-        slopes[sl, 0] -= np.gradient(d[sl], xn[sl]) if size > 2 else \
-            np.diff(d[sl]) / np.diff(xn[sl])
-        start += size
-    return CircularBody(body.name, xn - body.origin[0], r0 - d, rc[:, 1], body.origin,
-                        tuple(seg_sizes), body.mirrored, body.axial, body.points_per_section,
-                        slopes)
+    return BodyReduction(body, x, densify, exposure).body(area_removed)
 
 
-def _anderson(history):
-    """Next iterate of the fixed point t = G(t) by Anderson mixing over ``history``.
+class BodyReduction:
+    """The re-design of one body at fixed stations, for any removed areas (:func:`reduced_body`).
 
-    ``history`` holds (t_k, G(t_k)) pairs, oldest first. With one pair this is plain
-    substitution; with more, the step combines the last residuals f = G(t) - t to make the
-    linearised residual smallest (type-II Anderson, mixing 1): a secant method in all
-    stations at once, which sees how one station's area depends on its neighbours'.
+    Everything that depends only on the body and the stations (the new station layout, the
+    original radius, camber and slopes there, the covered perimeter, the interpolation of the
+    removed area) is computed once; :meth:`body` then builds the re-designed body for a
+    vector of removed areas and :meth:`jacobian` differentiates its radius reduction.
     """
-    t, g = (np.asarray(v, float) for v in history[-1])
-    f = g - t
-    if len(history) < 2:
-        return g
-    ts = np.array([h[0] for h in history])
-    fs = np.array([h[1] - h[0] for h in history])
-    d_t, d_f = np.diff(ts, axis=0).T, np.diff(fs, axis=0).T  # (n, m)
-    scale = np.linalg.norm(d_f, axis=0)
-    usable = scale > 1e-14 * max(np.linalg.norm(f), 1e-300)
-    if not usable.any():
-        return g
-    d_t, d_f, scale = d_t[:, usable], d_f[:, usable], scale[usable]
-    gamma = np.linalg.lstsq(d_f / scale, f, rcond=1e-12)[0] / scale
-    return g - (d_t + d_f) @ gamma
+
+    def __init__(self, body, x, densify=None, exposure=None):
+        self.original = body
+        self.order = np.argsort(x)
+        xs = np.asarray(x, float)[self.order]
+        xg = body.x_global
+        if densify is None:
+            densify = max(4, int(np.ceil(96 / max(xs.size, 1))))
+        if densify and xs.size > 1:
+            t = np.arange(1, densify + 1) / (densify + 1)
+            # Also the body intervals just outside the fillet range, where nothing is
+            # removed: there the new stations pin the body to its original radius, so its
+            # cubic does not swing away from the original next to the last re-designed
+            # station.
+            before = xg[xg < xs[0]][-1:] if (xg < xs[0]).any() else xs[:1]
+            after = xg[xg > xs[-1]][:1] if (xg > xs[-1]).any() else xs[-1:]
+            knots = np.concatenate([before, xs, after])
+            between = (knots[:-1, None] + t[None, :] * np.diff(knots)[:, None]).ravel()
+            stations = np.union1d(xs, between)
+        else:
+            stations = xs
+        tol = 1e-12 * max(body.length, 1.0)
+        new_x, seg_sizes, base, start, piece = [], [], [], 0, 0
+        for size in body.segments:
+            sx = xg[start:start + size]
+            inner = stations[(stations > sx[0] + tol) & (stations < sx[-1] - tol)]
+            inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
+                if inner.size else inner
+            merged = np.union1d(sx, inner)
+            # The original radius and camber with their slopes, from this segment's own
+            # pieces (one-sided at a joint where the next segment starts at the same x).
+            rc, drc = body._interp.value_and_slope(merged - body.origin[0],
+                                                   (piece, piece + size - 2))
+            new_x.append(merged)
+            seg_sizes.append(merged.size)
+            base.append((rc, drc))
+            start += size
+            piece += size - 1
+        self.xs, self.tol, self.seg_sizes = xs, tol, tuple(seg_sizes)
+        self.xn = xn = np.concatenate(new_x)
+        self.rc = np.concatenate([b[0] for b in base])
+        self.drc = np.concatenate([b[1] for b in base])
+        self.r0 = np.maximum(self.rc[:, 0], 0.0)
+        lcov = np.zeros_like(xn) if exposure is None else np.asarray(exposure(xn), float)
+        self.b = 2 * np.pi * self.r0 - lcov
+        # removed(xn) = P a: linear interpolation between the stations, zero outside.
+        n_a = xs.size
+        P = np.zeros((xn.size, n_a))
+        if n_a == 1:
+            P[np.abs(xn - xs[0]) <= tol, 0] = 1.0
+        else:
+            k = np.clip(np.searchsorted(xs, xn, side="right") - 1, 0, n_a - 2)
+            w = (xn - xs[k]) / (xs[k + 1] - xs[k])
+            ok = (xn >= xs[0]) & (xn <= xs[-1])
+            rows = np.flatnonzero(ok)
+            P[rows, k[ok]] += 1.0 - w[ok]
+            P[rows, k[ok] + 1] += w[ok]
+        self.P = P
+        self._dd_da = None
+        self._new = None
+
+    def _gradient(self, values):
+        """d(values)/dx along the new stations, segment by segment (np.gradient's scheme)."""
+        out = np.empty_like(values)
+        first = 0
+        for size in self.seg_sizes:
+            sl = slice(first, first + size)
+            out[sl] = np.gradient(values[sl], self.xn[sl], axis=0) if size > 2 else \
+                np.diff(values[sl], axis=0) / np.diff(self.xn[sl])[0]
+            first += size
+        return out
+
+    def body(self, area_removed):
+        """The re-designed CircularBody for removed areas (one per station, input order)."""
+        from ..model import CircularBody
+
+        body, xn, r0, b = self.original, self.xn, self.r0, self.b
+        removed = self.P @ np.asarray(area_removed, float)[self.order]
+        # pi d^2 - (2 pi r0 - L) d + A = 0 for the radius reduction d = r0 - r (smaller root).
+        disc = b * b - 4 * np.pi * removed
+        if np.any(disc < 0) or np.any(r0 ** 2 - removed / np.pi < 0):
+            k = int(np.argmax((disc < 0) | (r0 ** 2 - removed / np.pi < 0)))
+            raise GeometryError(f"the fillet adds more area ({removed[k]:.4g}) than the body "
+                                f"has at x = {xn[k]:.6g} ({np.pi * r0[k] ** 2:.4g}); use a "
+                                "smaller fillet", body.name, f"x = {xn[k]:.6g}")
+        sqrt_disc = np.sqrt(disc)
+        den = b + sqrt_disc
+        # The stable form of (b - sqrt(disc)) / (2 pi); nothing to remove where the body is
+        # a point.
+        d = np.where(den > 0, 2 * removed / np.where(den > 0, den, 1.0), 0.0)
+        self._dd_da = np.where(den > 0, 1.0 / np.where(sqrt_disc > 0, sqrt_disc, np.inf), 0.0)
+        # Hermite pieces with the original slopes less the reduction's: where nothing is
+        # removed the new body is the original cubic exactly, and everywhere it depends
+        # smoothly on the removed areas (a PCHIP rebuild would switch its slope limiter on a
+        # cylindrical mid-body, and kink the area iteration's map).
+        slopes = self.drc.copy()
+        slopes[:, 0] -= self._gradient(d)
+        self._new = CircularBody(body.name, xn - body.origin[0], r0 - d, self.rc[:, 1],
+                                 body.origin, self.seg_sizes, body.mirrored, body.axial,
+                                 body.points_per_section, slopes)
+        return self._new
+
+    def jacobian(self, xq):
+        """d(r0 - r)(xq) / d(area_removed) of the last :meth:`body`: (len(xq), stations)."""
+        xn, new = self.xn, self._new
+        dnode = self._dd_da[:, None] * self.P  # d(d_n) / d(a), sorted station order
+        # d(xq) is the Hermite interpolant of the nodal d with slopes grad(d), linear in d:
+        # interpolate each column of dnode the same way.
+        slope = self._gradient(dnode)
+        xq = np.asarray(xq, float)
+        brk = new._interp.breaks
+        piece = np.minimum(np.maximum(np.searchsorted(brk, xq - new.origin[0], side="right")
+                                      - 1, 0), brk.size - 1)
+        # Piece p of segment s joins nodes p + s and p + s + 1.
+        seg_of_piece = np.repeat(np.arange(len(self.seg_sizes)),
+                                 np.asarray(self.seg_sizes) - 1)
+        i = piece + seg_of_piece[piece]
+        h = (xn[i + 1] - xn[i])[:, None]
+        tau = ((xq - xn[i]) / h[:, 0])[:, None]
+        d_q = ((2 * tau - 3) * tau * tau + 1) * dnode[i] \
+            + (3 - 2 * tau) * tau * tau * dnode[i + 1] \
+            + ((tau - 2) * tau + 1) * tau * h * slope[i] + (tau - 1) * tau * tau * h * slope[i + 1]
+        xg = new.x_global
+        inside = (xq >= xg[0]) & (xq <= xg[-1])
+        out = np.zeros((xq.size, self.xs.size))
+        out[:, self.order] = np.where(inside[:, None], d_q, 0.0)
+        return out
+
+
+def _structured_newton(history, c_upper, w_upper, w_lower):
+    """Newton step for F(t) = G(t) - given(t) = 0 with a Jacobian built from its structure.
+
+    A station's added area G_j depends on the body where its two fillet lines start: the
+    radius reductions D_u = d(x_u,j) (upper, the station itself) and D_l = d(x_l,j) (the
+    lower line of the same lofting line, at another x). Model G_j = const + alpha_j D_u +
+    beta_j D_l, with alpha_j, beta_j fitted to the measured differences of the last
+    iterates (least squares per station; minimum norm from a single difference); the given
+    area depends on D_u through c_upper = d(given)/dD_u = 2 pi r - L. With w_upper, w_lower
+    = dD/dt (exact, from the re-designed body) the Jacobian is
+
+        J = diag(alpha - c_upper) w_upper + diag(beta) w_lower.
+
+    ``history`` holds (t, F, (D_u, D_l, G)) per iterate, oldest first. Returns the step, or
+    None if the model is singular (then the caller substitutes).
+    """
+    du = np.diff(np.array([h[2][0] for h in history]), axis=0)  # (k, n)
+    dl = np.diff(np.array([h[2][1] for h in history]), axis=0)
+    dg = np.diff(np.array([h[2][2] for h in history]), axis=0)
+    # Per-station 2x2 normal equations, with a ridge so that one difference gives the
+    # minimum-norm fit.
+    suu, sul, sll = (du * du).sum(0), (du * dl).sum(0), (dl * dl).sum(0)
+    sug, slg = (du * dg).sum(0), (dl * dg).sum(0)
+    ridge = 1e-10 * (suu + sll)
+    det = (suu + ridge) * (sll + ridge) - sul * sul
+    moved = det > 0  # a station whose body never moved keeps alpha = beta = 0
+    safe = np.where(moved, det, 1.0)
+    alpha = np.where(moved, ((sll + ridge) * sug - sul * slg) / safe, 0.0)
+    beta = np.where(moved, ((suu + ridge) * slg - sul * sug) / safe, 0.0)
+    jac = (alpha - c_upper)[:, None] * w_upper + beta[:, None] * w_lower
+    f = history[-1][1]
+    try:
+        with np.errstate(all="ignore"):
+            step = np.linalg.solve(jac, -f)
+    except np.linalg.LinAlgError:
+        return None
+    # A step far beyond the substitution's is a broken model, not a Newton step.
+    if not np.all(np.isfinite(step)) or np.abs(step).max() > 10 * np.abs(f).max():
+        return None
+    return step
 
 
 def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None,
@@ -288,10 +377,10 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     body : CircularBody
         The original body.
     make_fillets : callable
-        ``make_fillets(body, hints) -> (upper_inter, lower_inter, upper_fillet,
+        ``make_fillets(body, previous) -> (upper_inter, lower_inter, upper_fillet,
         lower_fillet)`` for a given body (the fillet is rebuilt on each re-designed body);
-        ``hints`` is None or the previous intersections' section coordinates (upper, lower),
-        passed only while every re-designed body lies inside the original one.
+        ``previous`` is None or that tuple from the previous iterate, for warm starts, passed
+        only while every re-designed body lies inside the original one.
     tolerance : float
         Relative area residual to reach at every fillet station.
     sides : {1, 2}
@@ -330,10 +419,11 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     current = body
     first_met = None
     history = []
-    hints = None
-    nodes = t = None
+    previous = None
+    reduction = t = None
     for it in range(1, max_iterations + 1):
-        parts = initial if (it == 1 and initial is not None) else make_fillets(current, hints)
+        parts = initial if (it == 1 and initial is not None) else \
+            make_fillets(current, previous)
         if exposure is not None:
             # Fillets by their polygons; every uncovered root by its covered perimeter.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])
@@ -358,19 +448,28 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         # The unknown: the area t given up for the fillets (and, without an exposure model,
         # for the uncovered root too) at fixed nodes, the first iteration's stations. The
         # stations move a little as the body shrinks (the lofting lines meet it further
-        # inboard), so the residual is measured where they are now, on what the body really
-        # gives up there; with the nodes fixed it is a function of t alone, which the
-        # Anderson step needs (moving the nodes with the stations held it to linear
-        # convergence, ratio ~0.06).
+        # inboard), so the residual F = G - given is measured where they are now, on what
+        # the body really gives up there; with the nodes fixed it is a function of t alone.
         g = only if exposure is not None else a_f
-        given = a0 - a_b - (0.0 if exposure is None else covered * (r_orig - r_now))
-        if nodes is None:
-            nodes, t = x, given
-        history.append((t, t + g - given))
-        t = _anderson(history[-(memory + 1):])
-        current = reduced_body(body, nodes, t, exposure=exposure)
+        lcov = covered if exposure is not None else 0.0
+        given = a0 - a_b - lcov * (r_orig - r_now)
+        x_low = parts[3].points[:, 0, 0]
+        sample = (r_orig - r_now, body.radius_at(x_low) - current.radius_at(x_low), g)
+        if reduction is None:
+            reduction, t = BodyReduction(body, x, exposure=exposure), given
+        f = g - given
+        if history and np.abs(f).max() > np.abs(history[-1][1]).max():
+            history = []  # no progress: start the model again from here
+        history.append((t, f, sample))
+        step = None
+        if len(history) >= 2:
+            w = reduction.jacobian(np.concatenate([x, x_low]))
+            step = _structured_newton(history[-(memory + 1):], 2 * np.pi * r_now - lcov,
+                                      w[:x.size], w[x.size:])
+        t = t + f if step is None else t + step
+        current = reduction.body(t)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
-        hints = (parts[0].u, parts[1].u) if np.all(t >= 0) else None
+        previous = parts if np.all(t >= 0) else None
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
                            f"iterations (worst residual {residual.max():.3g} at x = "
                            f"{x[np.argmax(residual)]:.6g})", body.name)

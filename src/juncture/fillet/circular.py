@@ -51,7 +51,7 @@ def _lipschitz(body, radius):
 
 
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
-                    n_points=9):
+                    n_points=9, hint=None):
     """Circular-arc fillet lines of radius ``radius`` for one surface.
 
     Parameters
@@ -68,6 +68,9 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         sharp intersection there and always starts on the body.
     n_points : int
         Points per fillet line, equally spaced in angle along the arc.
+    hint : (n_stations,) float, optional
+        Tangency points' section coordinates (``u_end``) of a previous solve on a body that
+        contained this one: the search starts there.
 
     Returns
     -------
@@ -121,7 +124,8 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         # when n is radial): I is never outside, so the crossing coming inboard from the tip
         # is found before it and the search stops there.
         u_low = np.where(inter.found[live], inter.u[live], -1.0)
-        cr = find_crossings(ln, error, u_low, lipschitz=_lipschitz(body, radius))
+        cr = find_crossings(ln, error, u_low, lipschitz=_lipschitz(body, radius),
+                            hint=None if hint is None else np.asarray(hint, float)[live])
         log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "
                    f"{k} lofting lines in {cr.iterations} iterations")
         idx = np.flatnonzero(live)

@@ -87,13 +87,19 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
     stated = {p.a for p in pairs}
     skip = {tuple(s) for s in skip}
     out = {p: intersect_pair(cfg, p) for p in pairs if (p.a, p.b) not in skip}
-    boxes = {c.name: _box(c) for c in cfg}
+    boxes = {}
+
+    def box(c):  # built on first use: the networks are not free
+        if c.name not in boxes:
+            boxes[c.name] = _box(c)
+        return boxes[c.name]
+
     for a in cfg.wings:
         if a.name in stated:
             continue
         for b in cfg:
             if b is a or (a.name, b.name) in skip or \
-                    not _overlap(boxes[a.name], boxes[b.name], margin):
+                    not _overlap(box(a), box(b), margin):
                 continue
             if isinstance(b, (CircularBody, ArbitraryBody)):
                 roles = ["body"]
