@@ -210,9 +210,13 @@ def _fillet_maker(wing, fillet, opts, body0):
     if fillet == "circular" and rho is None:
         rho = 0.1 * float(body0.radius.max())
 
-    def make(body, previous=None):
-        hints = None if previous is None else (previous[0].u, previous[1].u)
+    def make(body, previous=None, warm=False):
+        # previous: the last iterate's (iu, il, fu, fl) on a body it re-designs; its fillets'
+        # blending region is kept, and with warm=True its solutions seed the root finders.
+        hints = (previous[0].u, previous[1].u) if warm else None
         iu, il = intersect_body_both(wing, body, hints=hints)
+        ranges = (None, None) if previous is None else (previous[2].blend_range,
+                                                        previous[3].blend_range)
         if fillet is None:
             return iu, il, sharp_fillet(iu), _sharp_with_misses(body, il, iu)
         if fillet == "cubic":
@@ -222,14 +226,15 @@ def _fillet_maker(wing, fillet, opts, body0):
             kw = dict(theta_u=theta_u, end=opts.end, end_value=end_value,
                       blend_length=opts.blend_length, n_points=opts.n_fillet_points,
                       remedy=opts.remedy, blending=opts.blending)
-            return (iu, il, cubic_fillet(wing, body, iu, **kw),
-                    cubic_fillet(wing, body, il, upper_reference=iu, **kw))
+            return (iu, il, cubic_fillet(wing, body, iu, blend_range=ranges[0], **kw),
+                    cubic_fillet(wing, body, il, upper_reference=iu, blend_range=ranges[1],
+                                 **kw))
         if fillet == "circular":
             kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points)
-            up, lo = (None, None) if previous is None else (previous[2].u_end,
-                                                            previous[3].u_end)
-            return (iu, il, circular_fillet(wing, body, iu, rho, hint=up, **kw),
-                    circular_fillet(wing, body, il, rho, hint=lo, **kw))
+            up, lo = (previous[2].u_end, previous[3].u_end) if warm else (None, None)
+            return (iu, il,
+                    circular_fillet(wing, body, iu, rho, hint=up, blend_range=ranges[0], **kw),
+                    circular_fillet(wing, body, il, rho, hint=lo, blend_range=ranges[1], **kw))
         raise GeometryError(f"fillet must be None, 'cubic' or 'circular', found {fillet!r}")
     return make
 

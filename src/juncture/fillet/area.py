@@ -343,6 +343,14 @@ def _structured_newton(history, c_upper, w_upper, w_lower):
     # minimum-norm fit.
     suu, sul, sll = (du * du).sum(0), (du * dl).sum(0), (dl * dl).sum(0)
     sug, slg = (du * dg).sum(0), (dl * dg).sum(0)
+    if len(du) == 1:
+        # One difference cannot separate alpha from beta at a station; fit them as
+        # constants across the stations (they vary slowly along the wing) instead.
+        m = np.stack([du[0], dl[0]], axis=1)
+        coef, _, rank, sv = np.linalg.lstsq(m, dg[0], rcond=None)
+        if rank == 2 and sv[-1] > 1e-3 * sv[0]:
+            suu, sul, sll = np.ones_like(suu), np.zeros_like(sul), np.ones_like(sll)
+            sug, slg = np.full_like(sug, coef[0]), np.full_like(slg, coef[1])
     ridge = 1e-10 * (suu + sll)
     det = (suu + ridge) * (sll + ridge) - sul * sul
     moved = det > 0  # a station whose body never moved keeps alpha = beta = 0
@@ -363,7 +371,7 @@ def _structured_newton(history, c_upper, w_upper, w_lower):
 
 
 def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None,
-              memory=3, initial=None):
+              memory=1, initial=None):
     """Shrink the body until body area + added area equals the original area (TM-4406).
 
     TM-4406 compensates the fillet's area (eq 14) only. When the body shrinks, the wing's
@@ -377,10 +385,11 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     body : CircularBody
         The original body.
     make_fillets : callable
-        ``make_fillets(body, previous) -> (upper_inter, lower_inter, upper_fillet,
+        ``make_fillets(body, previous, warm) -> (upper_inter, lower_inter, upper_fillet,
         lower_fillet)`` for a given body (the fillet is rebuilt on each re-designed body);
-        ``previous`` is None or that tuple from the previous iterate, for warm starts, passed
-        only while every re-designed body lies inside the original one.
+        ``previous`` is None (the original body) or that tuple from the previous iterate,
+        whose blending region the new fillets keep; ``warm`` says whether its solutions may
+        seed the root finders (only while every re-designed body lies inside the original).
     tolerance : float
         Relative area residual to reach at every fillet station.
     sides : {1, 2}
@@ -419,11 +428,11 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     current = body
     first_met = None
     history = []
-    previous = None
+    previous, warm = None, False
     reduction = t = None
     for it in range(1, max_iterations + 1):
         parts = initial if (it == 1 and initial is not None) else \
-            make_fillets(current, previous)
+            make_fillets(current, previous, warm)
         if exposure is not None:
             # Fillets by their polygons; every uncovered root by its covered perimeter.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])
@@ -469,7 +478,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         t = t + f if step is None else t + step
         current = reduction.body(t)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
-        previous = parts if np.all(t >= 0) else None
+        previous, warm = parts, bool(np.all(t >= 0))
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
                            f"iterations (worst residual {residual.max():.3g} at x = "
                            f"{x[np.argmax(residual)]:.6g})", body.name)

@@ -22,7 +22,7 @@ import numpy as np
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, find_crossings
 from ..intersect.rays import SurfaceBound
-from .cubic import FilletLines, blend_factor
+from .cubic import FilletLines, blend_over
 
 __all__ = ["circular_fillet"]
 
@@ -51,7 +51,7 @@ def _lipschitz(body, radius):
 
 
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
-                    n_points=9, hint=None):
+                    n_points=9, hint=None, blend_range=None):
     """Circular-arc fillet lines of radius ``radius`` for one surface.
 
     Parameters
@@ -68,6 +68,9 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         sharp intersection there and always starts on the body.
     n_points : int
         Points per fillet line, equally spaced in angle along the arc.
+    blend_range : (x_le, x_te, l_b), optional
+        A fixed blending region (see :func:`.cubic.blend_over`); ``blend_length`` is then
+        ignored.
     hint : (n_stations,) float, optional
         Tangency points' section coordinates (``u_end``) of a previous solve on a body that
         contained this one: the search starts there.
@@ -86,9 +89,8 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     if np.any(np.asarray(rho_of(lines[:, 0, 0])) <= 0):
         raise GeometryError("circular fillet radius must be > 0", wing.name)
     x_i = np.where(inter.found, inter.points[:, 0], lines[:, 0, 0])
-    if blend_length is None:
-        blend_length = 0.1 * (x_i.max() - x_i.min())
-    beta = np.where(inter.found, blend_factor(x_i, x_i[0], x_i[-1], blend_length), 0.0)
+    beta, blend_range = blend_over(x_i, blend_length, blend_range)
+    beta = np.where(inter.found, beta, 0.0)
     live = beta > 0
     _, n = _normals(lines, sign)
     log = []
@@ -154,4 +156,4 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         beta = beta.copy()
         beta[idx[~ok]] = 0.0
     return FilletLines(side, pts, start, E, theta_b, u_end, beta, np.zeros(m, bool),
-                       "circular", tuple(log))
+                       "circular", tuple(log), blend_range)

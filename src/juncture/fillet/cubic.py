@@ -38,7 +38,8 @@ import numpy as np
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, polyline_points
 
-__all__ = ["FilletLines", "cubic_fillet", "EndMode", "Blending", "hermite", "blend_factor"]
+__all__ = ["FilletLines", "cubic_fillet", "EndMode", "Blending", "hermite", "blend_factor",
+           "blend_over"]
 
 EndMode = Literal["section", "intersection", "dy"]
 Blending = Literal["scale", "points"]
@@ -70,6 +71,9 @@ class FilletLines:
     kind : str
         ``"cubic"``, ``"parabolas"`` or ``"circular"``.
     log : tuple of str
+    blend_range : tuple of float or None
+        (x_le, x_te, l_b) the blending used [deck length]: pass it back as ``blend_range``
+        to blend another body's fillet over the same region.
     """
 
     side: str
@@ -82,6 +86,7 @@ class FilletLines:
     dips: np.ndarray
     kind: str = "cubic"
     log: tuple = ()
+    blend_range: tuple = None
 
 
 def hermite(p0, p1, t0, t1, s):
@@ -115,6 +120,26 @@ def _end_coordinate(wing, inter, end, end_value):
     return u_e
 
 
+def blend_over(x_i, blend_length=None, blend_range=None):
+    """beta(L) per lofting line and the (x_le, x_te, l_b) it used (eqs 8-9).
+
+    By default the edges are the first and last intersection points (leading and trailing
+    edge lines) and l_b a tenth of the distance between them. A given ``blend_range`` fixes
+    them instead (the fixed-area iteration blends every re-designed body's fillet over the
+    original body's region, so that no fillet depends on where the edge lines happen to
+    meet the body); the edge lines themselves still get beta = 0.
+    """
+    if blend_range is None:
+        x_le, x_te = float(x_i[0]), float(x_i[-1])
+        if blend_length is None:
+            blend_length = 0.1 * (np.max(x_i) - np.min(x_i))
+        blend_range = (x_le, x_te, blend_length)
+    beta = blend_factor(x_i, *blend_range)
+    if blend_range[2] is not None and blend_range[2] > 0:
+        beta[[0, -1]] = 0.0
+    return beta, blend_range
+
+
 def blend_factor(x, x_le, x_te, blend_length):
     """beta(L) = sin(pi L / 2) with L the distance from the nearer edge over l_b (eqs 8-9)."""
     if blend_length is None or blend_length <= 0:
@@ -125,7 +150,8 @@ def blend_factor(x, x_le, x_te, blend_length):
 
 def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
                  end: EndMode = "intersection", end_value=0.5, blend_length=None,
-                 n_points=9, remedy=None, upper_reference=None, blending: Blending = "scale"):
+                 n_points=9, remedy=None, upper_reference=None, blending: Blending = "scale",
+                 blend_range=None):
     """Cubic-arc fillet lines for one surface (TM-4406 eq 7, eqs 8-10).
 
     Parameters
@@ -153,6 +179,9 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         fillet start is taken from this upper-surface intersection's line of the same index.
     blending : {"scale", "points"}
         How the fillet is blended out towards the leading and trailing edges (module docstring).
+    blend_range : (x_le, x_te, l_b), optional
+        A fixed blending region (see :func:`blend_over`), e.g. a previous fillet's
+        ``blend_range``; ``blend_length`` is then ignored.
 
     Returns
     -------
@@ -186,9 +215,7 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
                        f"{body.name}; fillet starts at theta = {np.degrees(theta_i[j]):.0f} deg "
                        "with dx/dy = dz/dy = 0 (TM-4406 special case)")
     x_i = I[:, 0]
-    if blend_length is None:
-        blend_length = 0.1 * (x_i.max() - x_i.min())
-    beta = blend_factor(x_i, x_i[0], x_i[-1], blend_length)
+    beta, blend_range = blend_over(x_i, blend_length, blend_range)
     beta = np.where(missed, 1.0, beta)
     scale = beta if blending == "scale" else np.ones(m)
     theta_u = np.broadcast_to(np.asarray(theta_u, float), (m,))
@@ -250,7 +277,8 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         theta_b = np.arctan2(start[:, 2] - ctr[:, 1], start[:, 1] - ctr[:, 0])
     else:
         pts, start = f, B
-    return FilletLines(side, pts, start, E, theta_b, u_e, beta, dips, kind, tuple(log))
+    return FilletLines(side, pts, start, E, theta_b, u_e, beta, dips, kind, tuple(log),
+                       blend_range)
 
 
 def _dips(f, v, sign, s):
