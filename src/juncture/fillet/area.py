@@ -402,28 +402,31 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         stations and the uncovered roots everywhere on the re-designed body, so the whole
         cross-section keeps its area between the fillet stations too. Without it the
         uncovered wing root is measured on the fillet stations only (fillet polygons).
+    memory : int
+        Past differences the Newton step's sensitivities are fitted to (1: the last one,
+        with the sensitivities taken as constants across the stations).
+    initial : tuple, optional
+        ``make_fillets(body, None, False)`` if the caller already has it.
 
     Returns
     -------
     Compensation
         ``area_fillet`` is the added area of all ``sides`` fillets at each station.
 
-    memory : int
-        Past iterates the Anderson step combines.
-    initial : tuple, optional
-        ``make_fillets(body, None)`` if the caller already has it.
-
     Notes
     -----
     Each iteration removes an area t from the original body (not from the previous iterate)
     at fixed nodes (the stations on the original body), so the problem is the root of
     F(t) = A(body(t)) - given(body(t)), the added area against what the body gives up, both
-    measured at the current stations. The first step is the paper's substitution; after it
-    Anderson mixing solves F = 0 across all stations (a station's fillet also depends on
-    its neighbours: the lower fillet line of the same lofting line meets the body at another
-    x, and the stations move as the body shrinks). The re-designed body is a smooth function
-    of t (Hermite pieces), so the iteration is too. The intersections are warm-started from
-    the previous iterate while the body only shrinks.
+    measured at the current stations. The first step is the paper's substitution (which
+    alone converges linearly, about 0.07 per step on the benchmark wing). After it, a Newton
+    step uses the structure of the Jacobian: a station's area depends on the body only
+    where its upper and its lower fillet lines start (the lower one at another x), with
+    sensitivities fitted to the measured differences (:func:`_structured_newton`) and the
+    exact derivative of the re-designed body (:meth:`BodyReduction.jacobian`). The fillets
+    keep the original body's blending region, and the re-designed body is a smooth function
+    of t (Hermite pieces), so the model holds. The intersections are warm-started from the
+    previous iterate while the body only shrinks.
     """
     current = body
     first_met = None
