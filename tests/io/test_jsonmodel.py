@@ -60,3 +60,15 @@ def test_json_syntax_error_names_line_and_column(tmp_path):
     p.write_text('{"juncture": 1,\n "components": [,]}\n')
     with pytest.raises(jc.DeckError, match=r"bad.json, line 2, column 17: invalid JSON"):
         jc.read(p)
+
+
+def test_a_re_designed_fuselage_round_trips_with_its_slopes(tmp_path):
+    geo = jc.complete(example(), "cubic", keep_area=True)
+    cfg = geo.configuration
+    body = cfg["body"]
+    assert body.slopes is not None
+    jc.write(cfg, tmp_path / "redesigned.json")
+    back = jc.read(tmp_path / "redesigned.json")["body"]
+    np.testing.assert_array_equal(back.slopes, body.slopes)
+    xq = np.linspace(body.x_global[0], body.x_global[-1], 997)
+    np.testing.assert_array_equal(back.radius_at(xq), body.radius_at(xq))

@@ -61,7 +61,7 @@ def _component(d, index):
                             _get(d, "chordwise", where, str, "pchip"))
         if ctype == "circular_body":
             _known(d, {"name", "type", "x", "radius", "camber", "origin", "segments",
-                       "mirrored", "axial", "points_per_section"}, where)
+                       "mirrored", "axial", "points_per_section", "slopes"}, where)
             pps = _get(d, "points_per_section", where, list, None)
             return CircularBody(name, _get(d, "x", where, list), _get(d, "radius", where, list),
                                 _get(d, "camber", where, list, None),
@@ -69,7 +69,8 @@ def _component(d, index):
                                 _get(d, "segments", where, list, None),
                                 _get(d, "mirrored", where, bool, False),
                                 _get(d, "axial", where, str, "pchip"),
-                                None if pps is None else tuple(pps))
+                                None if pps is None else tuple(pps),
+                                _get(d, "slopes", where, list, None))
         if ctype == "arbitrary_body":
             _known(d, {"name", "type", "x", "sections", "segments", "mirrored"}, where)
             return ArbitraryBody(name, _get(d, "x", where, list),
@@ -125,6 +126,8 @@ def configuration_to_dict(cfg):
                  "segments": list(c.segments), "mirrored": c.mirrored, "axial": c.axial}
             if c.points_per_section:
                 d["points_per_section"] = list(c.points_per_section)
+            if c.slopes is not None:
+                d["slopes"] = _lst(c.slopes)
             comps.append(d)
         else:
             comps.append({"name": c.name, "type": "arbitrary_body", "x": _lst(c.x),
