@@ -1,16 +1,15 @@
 """Fillets of the wing-body juncture: cubic arcs, circular arcs, added area (TM-4406)."""
 
 from .area import (
-                   BodyReduction,
-                   Compensation,
-                   fillet_added_area,
-                   keep_area,
-                   polygon_disk_area,
-                   reduced_body,
+    BodyReduction,
+    Compensation,
+    fillet_added_area,
+    keep_area,
+    polygon_disk_area,
+    reduced_body,
 )
 from .circular import circular_fillet
 from .cubic import FilletLines, blend_factor, cubic_fillet, hermite
 
 __all__ = ["FilletLines", "cubic_fillet", "circular_fillet", "fillet_added_area", "keep_area",
-           "BodyReduction",
-           "reduced_body", "polygon_disk_area", "Compensation", "blend_factor", "hermite"]
+           "BodyReduction", "reduced_body", "polygon_disk_area", "Compensation", "blend_factor", "hermite"]

@@ -229,7 +229,7 @@ class BodyReduction:
             base.append((rc, drc))
             start += size
             piece += size - 1
-        self.xs, self.tol, self.seg_sizes = xs, tol, tuple(seg_sizes)
+        self.xs, self.seg_sizes = xs, tuple(seg_sizes)
         self.xn = xn = np.concatenate(new_x)
         self.rc = np.concatenate([b[0] for b in base])
         self.drc = np.concatenate([b[1] for b in base])
@@ -250,7 +250,6 @@ class BodyReduction:
             P[rows, k[ok] + 1] += w[ok]
         self.P = P
         self._dd_da = None
-        self._new = None
 
     def _gradient(self, values):
         """d(values)/dx along the new stations, segment by segment (np.gradient's scheme)."""
@@ -288,33 +287,20 @@ class BodyReduction:
         # cylindrical mid-body, and kink the area iteration's map).
         slopes = self.drc.copy()
         slopes[:, 0] -= self._gradient(d)
-        self._new = CircularBody(body.name, xn - body.origin[0], r0 - d, self.rc[:, 1],
-                                 body.origin, self.seg_sizes, body.mirrored, body.axial,
-                                 body.points_per_section, slopes)
-        return self._new
+        return CircularBody(body.name, xn - body.origin[0], r0 - d, self.rc[:, 1], body.origin,
+                            self.seg_sizes, body.mirrored, body.axial, body.points_per_section,
+                            slopes)
 
     def jacobian(self, xq):
         """d(r0 - r)(xq) / d(area_removed) of the last :meth:`body`: (len(xq), stations)."""
-        xn, new = self.xn, self._new
+        from ..model.body import hermite_pieces
+
         dnode = self._dd_da[:, None] * self.P  # d(d_n) / d(a), sorted station order
         # d(xq) is the Hermite interpolant of the nodal d with slopes grad(d), linear in d:
         # interpolate each column of dnode the same way.
-        slope = self._gradient(dnode)
         xq = np.asarray(xq, float)
-        brk = new._interp.breaks
-        piece = np.minimum(np.maximum(np.searchsorted(brk, xq - new.origin[0], side="right")
-                                      - 1, 0), brk.size - 1)
-        # Piece p of segment s joins nodes p + s and p + s + 1.
-        seg_of_piece = np.repeat(np.arange(len(self.seg_sizes)),
-                                 np.asarray(self.seg_sizes) - 1)
-        i = piece + seg_of_piece[piece]
-        h = (xn[i + 1] - xn[i])[:, None]
-        tau = ((xq - xn[i]) / h[:, 0])[:, None]
-        d_q = ((2 * tau - 3) * tau * tau + 1) * dnode[i] \
-            + (3 - 2 * tau) * tau * tau * dnode[i + 1] \
-            + ((tau - 2) * tau + 1) * tau * h * slope[i] + (tau - 1) * tau * tau * h * slope[i + 1]
-        xg = new.x_global
-        inside = (xq >= xg[0]) & (xq <= xg[-1])
+        d_q = hermite_pieces(self.xn, dnode, self._gradient(dnode), self.seg_sizes)(xq)
+        inside = (xq >= self.xn[0]) & (xq <= self.xn[-1])
         out = np.zeros((xq.size, self.xs.size))
         out[:, self.order] = np.where(inside[:, None], d_q, 0.0)
         return out
@@ -448,6 +434,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
                                              reference_body=body)
             only, a_f = sides * only, sides * a_f
             r_orig, r_now = body.radius_at(x), current.radius_at(x)
+            covered = 0.0  # the polygons already hold the uncovered root
         a0 = np.pi * r_orig ** 2
         a_b = np.pi * r_now ** 2
         residual = np.abs(a_b + a_f - a0) / np.where(a0 > 0, a0, 1.0)
@@ -463,8 +450,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         # inboard), so the residual F = G - given is measured where they are now, on what
         # the body really gives up there; with the nodes fixed it is a function of t alone.
         g = only if exposure is not None else a_f
-        lcov = covered if exposure is not None else 0.0
-        given = a0 - a_b - lcov * (r_orig - r_now)
+        given = a0 - a_b - covered * (r_orig - r_now)
         x_low = parts[3].points[:, 0, 0]
         sample = (r_orig - r_now, body.radius_at(x_low) - current.radius_at(x_low), g)
         if reduction is None:
@@ -476,7 +462,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         step = None
         if len(history) >= 2:
             w = reduction.jacobian(np.concatenate([x, x_low]))
-            step = _structured_newton(history[-(memory + 1):], 2 * np.pi * r_now - lcov,
+            step = _structured_newton(history[-(memory + 1):], 2 * np.pi * r_now - covered,
                                       w[:x.size], w[x.size:])
         t = t + f if step is None else t + step
         current = reduction.body(t)

@@ -60,6 +60,19 @@ def _hermite_coefficients(x, y, dy):
                      y[:-1]])
 
 
+def hermite_pieces(x, values, slopes, segments):
+    """Segment-wise cubic Hermite interpolant of columns ``values`` (n, cols) along ``x``.
+
+    ``slopes`` (n, cols) are the x-derivatives at the stations; ``segments`` the station
+    count of each segment, as for a body. Returns a callable ``f(xq) -> (..., cols)`` (the
+    body's own piecewise evaluator: the first / last cubic extrapolates).
+    """
+    x = np.asarray(x, float)
+    _, bounds = _segment_layout(x, segments, "hermite pieces")
+    return _Piecewise(x, np.asarray(values, float), bounds, "pchip",
+                      np.asarray(slopes, float))
+
+
 class _Piecewise:
     """Segment-wise interpolant of several columns of data along x, as one piecewise cubic.
 
