@@ -12,4 +12,5 @@ from .circular import circular_fillet
 from .cubic import FilletLines, blend_factor, cubic_fillet, hermite
 
 __all__ = ["FilletLines", "cubic_fillet", "circular_fillet", "fillet_added_area", "keep_area",
-           "BodyReduction", "reduced_body", "polygon_disk_area", "Compensation", "blend_factor", "hermite"]
+           "BodyReduction", "reduced_body", "polygon_disk_area", "Compensation", "blend_factor",
+           "hermite"]
