@@ -1,8 +1,6 @@
-"""LaWGS reader and writer (NASA TM-85767), against the sample files in shared/data/lawgs."""
+"""LaWGS reader and writer (NASA TM-85767), against the sample files in tests/data/lawgs."""
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,14 +12,7 @@ import juncture as jc
 from juncture.errors import DeckError, GeometryError
 from juncture.geometry import Geometry
 from juncture.io import lawgs
-
-# The sample files (shared/data/PROVENANCE.md): a copy under tests/data if the lead adds one,
-# else the shared tree beside the repository.
-_HERE = Path(__file__).resolve()
-DATA = next((d for d in (_HERE.parents[1] / "data" / "lawgs",
-                         _HERE.parents[3] / "shared" / "data" / "lawgs") if d.is_dir()),
-            _HERE.parents[3] / "shared" / "data" / "lawgs")
-needs_data = pytest.mark.skipif(not DATA.is_dir(), reason="sample LaWGS files not available")
+from tests.support import LAWGS_DIR as DATA
 
 # (file, title, [(name, NLINE, NPNT, ISYMG), ...]) as written in the files' headers (read by eye).
 _F16XL = [("WING-UPPER-OB", 5, 20), ("WING-UPPER-IB", 5, 20), ("SPEED-LUMP-UPPER", 11, 7),
@@ -64,7 +55,6 @@ def _write(tmp_path, text, name="t.wgs"):
     return p
 
 
-@needs_data
 @pytest.mark.parametrize("fname,title,objects", SAMPLES, ids=[s[0] for s in SAMPLES])
 def test_samples_read_with_their_header_counts(fname, title, objects):
     geo = lawgs.read(DATA / fname)
@@ -79,7 +69,6 @@ def test_samples_read_with_their_header_counts(fname, title, objects):
     assert dict(geo.symmetry) == {n: "xz" for n, _, _, s in objects if s == 1}
 
 
-@needs_data
 def test_sample_values_as_printed():
     ex3 = lawgs.read(DATA / "tm85767_ex3_very_simple_airplane.wgs")
     np.testing.assert_array_equal(ex3.networks["WING"][0, :2],
@@ -91,7 +80,6 @@ def test_sample_values_as_printed():
     np.testing.assert_array_equal(f16.networks["RULED"][-1, -1], [565.906, 27.5735, 102.330])
 
 
-@needs_data
 def test_wd2wgs_fuselage_radii_match_the_deck_areas():
     # formats.md section 1: r = sqrt(FUSARD / pi) = 3.599, 6.401, 8.401, 9.600, 10.0 at x = 10..50
     seg = lawgs.read(DATA / "pdas_wdcase1_wd2wgs_output.wgs").networks[
@@ -103,7 +91,6 @@ def test_wd2wgs_fuselage_radii_match_the_deck_areas():
     assert np.all(seg[..., 1] > -1e-6)  # the described y >= 0 half (wd2wgs prints -3e-7)
 
 
-@needs_data
 def test_ex2_local_reproduces_ex1_global():
     """TM-85767 example 2 (local coordinates, ISYML) is example 1 (global, ISYMG) re-placed.
 
@@ -126,7 +113,6 @@ def test_ex2_local_reproduces_ex1_global():
                                    atol=1e-12)
 
 
-@needs_data
 def test_local_image_keeps_the_orientation():
     # Every ex2 cylinder is oriented one way (normals all inward or all outward about its
     # axis); the local image, n-lines reversed, must be oriented the same way.
@@ -296,14 +282,12 @@ def test_writer_error_leaves_old_file(tmp_path):
     assert sorted(x.name for x in tmp_path.iterdir()) == ["keep.wgs"]
 
 
-@needs_data
 @pytest.mark.parametrize("fname", [s[0] for s in SAMPLES])
 def test_registry_reads_every_sample_as_lawgs(fname):
     geo = jc.read(DATA / fname)
     assert geo.allclose(lawgs.read(DATA / fname), rtol=0, atol=0)
 
 
-@needs_data
 def test_sniffer_picks_lawgs_by_content(tmp_path):
     src = (DATA / "tm85767_ex3_very_simple_airplane.wgs").read_bytes()
     p = tmp_path / "airplane.txt"

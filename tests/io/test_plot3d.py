@@ -11,10 +11,7 @@ import juncture as jc
 from juncture.errors import DeckError
 from juncture.geometry import Geometry
 from juncture.io import plot3d
-
-_HERE = Path(__file__).resolve()
-DATA = next((d for d in (_HERE.parents[1] / "data", _HERE.parents[3] / "shared" / "data")
-             if (d / "lawgs").is_dir()), _HERE.parents[3] / "shared" / "data")
+from tests.support import DATA
 
 
 def _geometry():

@@ -6,7 +6,6 @@ from the hand-written decks in tests/data/decks/, whose intended numbers are typ
 
 import dataclasses
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,9 +15,10 @@ from hypothesis import strategies as st
 from juncture.errors import DeckError, JunctureError, JunctureWarning
 from juncture.io import wavedrag as wd
 from juncture.io._registry import _FORMATS
+from tests.support import DECKS_DIR, LAWGS_DIR, PDAS_DECK
 
-SAMPLE = Path("/work/shared/data/wavedrag/pdas_wdcase1_wing_3segment_circular_body.inp")
-DECKS = Path(__file__).resolve().parent.parent / "data" / "decks"
+SAMPLE = PDAS_DECK
+DECKS = DECKS_DIR
 ALL_DECKS = [SAMPLE, *sorted(DECKS.glob("*.inp"))]
 
 
@@ -456,7 +456,7 @@ def test_range_limits_are_warnings_not_errors():
 def test_sniffer_accepts_decks_and_rejects_other_formats():
     for path in ALL_DECKS:
         assert wd._sniff(path.read_bytes()[:4096]), path.name
-    for path in Path("/work/shared/data/lawgs").glob("*.wgs"):
+    for path in LAWGS_DIR.glob("*.wgs"):
         assert not wd._sniff(path.read_bytes()[:4096]), path.name
     assert not wd._sniff(b"just one line")
     assert not wd._sniff(b"title\n" + b"  0" * 24 + b"\n")  # no component at all

@@ -1,6 +1,6 @@
 """Slender-body (von Karman / Eminton-Lord) and far-field averaged supersonic wave drag.
 
-Source: /work/shared/reference/wavedrag.md. A body of length ``l`` with cross-sectional area
+Source: docs/wavedrag-reference.md. A body of length ``l`` with cross-sectional area
 ``S(x)``, ``S(0) = 0`` at the nose, is described in the angle ``theta`` of
 
     x = x_nose + (l / 2) (1 - cos theta),     0 <= theta <= pi,

@@ -1,6 +1,6 @@
 """Readers and writers, one module per format, dispatched by content or extension.
 
-See ``../shared/reference/formats.md`` for the formats. Importing this package registers
+See ``docs/formats.md`` for the formats. Importing this package registers
 every format module.
 """
 

@@ -2,7 +2,7 @@
 
 TM-4406 and TM-4607 write their surfaces "in Hess format" (NASA CR-2962): networks made of
 n-lines (sections) whose equal point indices form m-lines. No public card layout of CR-2962
-was found (``shared/reference/formats.md`` section 3), so this is a documented plain network
+was found (``docs/formats.md`` section 3), so this is a documented plain network
 list of the same structure, not the CR-2962 card deck. The exact layout is in ``docs/hess.md``::
 
     HESS NETWORK LIST 1

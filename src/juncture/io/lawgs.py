@@ -1,6 +1,6 @@
 """LaWGS (Langley Wireframe Geometry Standard, NASA TM-85767) reader and writer, ``.wgs``.
 
-See ``shared/reference/formats.md`` section 3. A LaWGS file is a title record followed by
+See ``docs/formats.md`` section 3. A LaWGS file is a title record followed by
 objects; each object is a name record, a header of 14 list-directed numbers::
 
     NOBJ NLINE NPNT ISYML RX RY RZ TX TY TZ XSCALE YSCALE ZSCALE ISYMG

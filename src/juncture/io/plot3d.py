@@ -1,6 +1,6 @@
 """Plot3D formatted surface grids, ``.p3d`` (also ``.xyz``, ``.g``): reader and writer.
 
-See ``shared/reference/formats.md`` section 4 (NASA PLOT3D manual; OpenVSP's writer as a
+See ``docs/formats.md`` section 4 (NASA PLOT3D manual; OpenVSP's writer as a
 concrete example). juncture writes the formatted, multi-block, "whole" layout with KDIM = 1::
 
     NBLK

@@ -1,6 +1,6 @@
 """The wave-drag (Harris / D2500 / AWAVE) geometry deck: read and write, card for card.
 
-The format is described in ``shared/reference/formats.md`` section 1, after L. A. McCullers,
+The format is described in ``docs/formats.md`` section 1, after L. A. McCullers,
 *User's Guide for the Revised Wave Drag Analysis Program* (AWAVE, 1992), cross-checked against
 R. L. Carmichael's PDAS ``wd2wgs``. This module works at the *raw* level: :func:`read_deck`
 returns a :class:`Deck` whose records mirror the cards (percent chord, areas, flags as read),
