@@ -80,14 +80,46 @@ def test_single_network_fuselage():
 
 def test_bad_options_are_clear():
     cfg = example()
-    with pytest.raises(jc.GeometryError, match="unknown option"):
+    with pytest.raises(jc.OptionError, match="theta = 3: expected no such option; the options"):
         jc.complete(cfg, "cubic", theta=3)
-    with pytest.raises(jc.GeometryError, match="fillet must be None, 'cubic' or 'circular'"):
+    with pytest.raises(jc.OptionError, match="fillet = 'round': expected None, 'cubic' or"):
         jc.complete(cfg, "round")
-    with pytest.raises(jc.GeometryError, match="blocks must be 4 or 6"):
+    with pytest.raises(jc.OptionError, match="blocks = 5: expected None, 4, 6 or 'split'"):
         jc.complete(cfg, blocks=5)
     with pytest.raises(jc.GeometryError, match="needs a fuselage named 'hull'"):
         jc.complete(cfg, body="hull")
+
+
+@pytest.mark.parametrize("fillet, keep_area, options, match", [
+    ("cubic", False, {"theta_u_deg": -10.0}, r"theta_u_deg = -10.0: expected an angle in \(0, 90\)"),
+    ("cubic", False, {"theta_u_deg": 90.0}, "theta_u_deg = 90.0"),
+    ("cubic", False, {"theta_u_deg": float("nan")}, "theta_u_deg = nan"),
+    ("cubic", False, {"blend_length": -3.0}, "blend_length = -3.0: expected a length > 0"),
+    ("cubic", False, {"end_value": 0.0}, "end_value = 0.0: expected a span increment > 0"),
+    ("cubic", False, {"end": "section", "end_value": 100.0},
+     r"end_value = 100.0: expected a fraction in \(0, 1\] with end='section'"),
+    ("cubic", False, {"end": "tip"}, "end = 'tip'"),
+    ("circular", False, {"fillet_radius": 0.0}, "fillet_radius = 0.0: expected a radius > 0"),
+    ("cubic", False, {"fillet_radius": 1.0}, "fillet_radius = 1.0: expected no value unless "
+     "fillet='circular'"),
+    ("circular", False, {"theta_u_deg": 30.0}, None),  # a default-valued field: no complaint
+    ("circular", False, {"remedy": "parabolas"}, "remedy = 'parabolas': expected no value unless"),
+    (None, True, {}, "keep_area = True: expected False without a fillet"),
+    (None, False, {"blend_length": 2.0}, "blend_length = 2.0: expected no value without"),
+    ("cubic", False, {"single_network": True, "remedy": "parabolas"},
+     "remedy = 'parabolas': expected 'z-constraint' or None with single_network"),
+    ("cubic", False, {"n_fillet_points": 2}, "n_fillet_points = 2: expected an integer >= 3"),
+    ("cubic", False, {"tolerance": 0.0}, r"tolerance = 0.0: expected a relative tolerance"),
+])
+def test_options_outside_their_range_are_refused_before_any_work(fillet, keep_area, options,
+                                                                  match):
+    cfg = wing_body()
+    if match is None:
+        assert jc.complete(cfg, fillet, keep_area, **options).fillets
+        return
+    with pytest.raises(jc.OptionError, match=match) as info:
+        jc.complete(cfg, fillet, keep_area, **options)
+    assert "\n" not in str(info.value)
 
 
 def test_complete_geometry_writes_to_every_format(tmp_path):

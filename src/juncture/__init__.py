@@ -17,6 +17,7 @@ from .errors import (
                      JunctureError,
                      JunctureWarning,
                      MissingDependencyError,
+                     OptionError,
                      SpecError,
 )
 from .geometry import Geometry
@@ -36,6 +37,7 @@ __all__ = [
     "ConvergenceError",
     "SpecError",
     "MissingDependencyError",
+    "OptionError",
     "JunctureWarning",
     "__version__",
 ]

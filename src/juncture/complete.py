@@ -10,12 +10,11 @@ are passed through as their own networks.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
-from .errors import GeometryError
+from .errors import GeometryError, OptionError
 from .fillet.area import fillet_added_area
 from .fillet.area import keep_area as _keep_area
 from .fillet.circular import circular_fillet
@@ -31,82 +30,11 @@ from .networks import (
     radial_outward,
     split_counts,
 )
+from .options import CompleteOptions, check_combination
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 
 FilletKind = Literal["cubic", "circular"]
-
-
-@dataclass(frozen=True, slots=True)
-class CompleteOptions:
-    """Options of :func:`complete` (all have paper-like defaults).
-
-    Attributes
-    ----------
-    theta_u_deg : float
-        Cubic fillet: angular distance of the start point above/below the intersection [deg].
-    end : {"dy", "intersection", "section"}
-        Cubic fillet end-point option (TM-4406): a span increment from the intersection,
-        a fraction of the intersection -> section 2 distance, or a fraction of the section
-        1 -> 2 distance.
-    end_value : float or None
-        Its value (a length for "dy", else a fraction). None: a quarter of the body's largest
-        radius for "dy" (a fraction of the distance to section 2 is a poor default for a wing
-        given by two sections, root and tip), 0.5 otherwise.
-    blend_length : float or None
-        LE/TE blending length l_b [deck length]; None: a tenth of the wing root's x extent.
-    blending : {"scale", "points"}
-        How the fillet blends out towards the edges (see juncture.fillet.cubic).
-    remedy : {None, "z-constraint", "parabolas"}
-        Low-wing dip remedy for the cubic fillet.
-    fillet_radius : float or None
-        Circular fillet radius rho [deck length]; None: 10 % of the largest body radius.
-    n_fillet_points : int
-        Points per fillet line.
-    blocks : {None, 4, 6, "split"}
-        Output layout: TM-4406's 4 or 6 blocks, or TM-4607's fuselage upper and lower
-        surfaces split by theta_b(x) through the canard, wing and tail regions (starting at a
-        centre-line fin's intersection). None: "split" when components other than the wing
-        touch the fuselage, else 4.
-    single_network : bool
-        Fuselage as one network with the lower intersection re-interpolated at the upper
-        points' x (TM-4406 fig 4) and points redistributed around the wing (fig 5).
-    tolerance : float
-        Relative area tolerance of the keep-area iteration.
-    wing, body : str
-        Names of the wing and fuselage components.
-    pairs : tuple of (a, b, role)
-        Touching pairs stated explicitly (role "body", "upper" or "lower", see
-        :mod:`juncture.intersect.pairs`); the others are found automatically.
-    empennage_sections : int
-        Sections interpolated between root and tip of canards, fins, tails and pylons given
-        by two sections only (TM-4607).
-    min_lofting_lines : int
-        With ``keep_area``: a wing with fewer chordwise stations gets extra ones, each input
-        interval divided evenly, so the fuselage is re-designed at that many fillet stations.
-        The new stations lie on the section curves, but the curves through them differ a
-        little between stations (PCHIP refitted), so this changes the wing: off (0) by
-        default, and rarely needed (the re-designed body follows the compensation between
-        fillet stations; the PDAS deck's three lofting lines already restore its drag to
-        2.3e-4).
-    """
-
-    theta_u_deg: float = 20.0
-    end: str = "dy"
-    end_value: float | None = None
-    blend_length: float | None = None
-    blending: str = "scale"
-    remedy: str | None = None
-    fillet_radius: float | None = None
-    n_fillet_points: int = 9
-    blocks: object = None
-    single_network: bool = False
-    tolerance: float = 1e-9
-    wing: str = "wing"
-    body: str = "body"
-    pairs: tuple = ()
-    empennage_sections: int = 4
-    min_lofting_lines: int = 0
 
 
 def sharp_fillet(inter):
@@ -431,11 +359,12 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     if kwargs:
         unknown = sorted(set(kwargs) - set(CompleteOptions.__dataclass_fields__))
         if unknown:
-            raise GeometryError(f"unknown option(s) {', '.join(unknown)}; known: "
-                                f"{', '.join(sorted(CompleteOptions.__dataclass_fields__))}")
+            raise OptionError(unknown[0], kwargs[unknown[0]], "no such option; the options are "
+                              f"{', '.join(sorted(CompleteOptions.__dataclass_fields__))}")
         fields = {f: getattr(opts, f) for f in CompleteOptions.__dataclass_fields__}
         fields.update(kwargs)
         opts = CompleteOptions(**fields)
+    check_combination(fillet, keep_area, opts)
     wing = _pick(cfg, opts.wing, "wing")
     body0 = _pick(cfg, opts.body, "fuselage")
     if not isinstance(body0, CircularBody) and fillet is not None:
@@ -473,8 +402,6 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                    f"{comp.residual.max():.3g}; radius reduced by up to "
                    f"{np.max(comp.radius_original - comp.radius_new):.4g}")
     else:
-        if keep_area:
-            log.append("keep_area: nothing to compensate without a fillet")
         body = body0
         iu, il, fu, fl = make(body)
         if fillet is not None:

@@ -13,6 +13,7 @@ __all__ = [
     "GeometryError",
     "ConvergenceError",
     "SpecError",
+    "OptionError",
     "MissingDependencyError",
     "JunctureWarning",
 ]
@@ -92,6 +93,26 @@ class ConvergenceError(GeometryError):
 
 class SpecError(JunctureError):
     """A JSON/TOML specification with a missing, unknown or ill-typed field (names the field)."""
+
+
+class OptionError(JunctureError):
+    """An option outside its allowed values: names the option, the value and what is allowed.
+
+    Parameters
+    ----------
+    option : str
+        The option's name in the Python API, e.g. ``"theta_u_deg"``.
+    value : object
+        The value given.
+    expected : str
+        What is allowed, e.g. ``"an angle in (0, 90) deg"``.
+    """
+
+    def __init__(self, option, value, expected):
+        self.option = option
+        self.value = value
+        self.expected = expected
+        super().__init__(f"{option} = {value!r}: expected {expected}")
 
 
 class MissingDependencyError(JunctureError):
