@@ -16,10 +16,10 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
 
 from ..errors import GeometryError
 from ._arrays import check_finite, check_increasing, frozen
+from ._pchip import pchip
 
 __all__ = ["Airfoil", "ChordwiseInterpolation", "surface_offsets", "interpolate_chordwise"]
 
@@ -124,7 +124,6 @@ def interpolate_chordwise(x_over_c, offsets, fraction, method: ChordwiseInterpol
     if method != "pchip":
         raise GeometryError(f"chordwise interpolation must be 'pchip' or 'linear', found "
                             f"{method!r}")
-    # PchipInterpolator interpolates along axis 0 for any trailing shape: one call for all
-    # sections. Outside the stations it extrapolates with the end cubics.
-    moved = np.moveaxis(off, -1, 0)
-    return np.moveaxis(PchipInterpolator(t, moved, axis=0, extrapolate=True)(f), 0, -1)
+    # pchip interpolates along axis 0 for any trailing shape: one call for all sections.
+    # Outside the stations it extrapolates with the end cubics.
+    return np.moveaxis(pchip(t, np.moveaxis(off, -1, 0), f), 0, -1)

@@ -16,10 +16,10 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
 
 from ..errors import GeometryError
 from ._arrays import check_finite, frozen
+from ._pchip import hermite_coefficients, pchip_coefficients
 
 __all__ = ["CircularBody", "ArbitraryBody", "AxialInterpolation"]
 
@@ -50,16 +50,6 @@ def _segment_layout(x, segments, name):
     return seg, bounds
 
 
-def _hermite_coefficients(x, y, dy):
-    """(4, n - 1, cols) cubic coefficients (highest first, local x - x_k) of the Hermite
-    interpolant through values y and slopes dy at x (n, cols)."""
-    h = np.diff(x)[:, None]
-    delta = np.diff(y, axis=0) / h
-    s0, s1 = dy[:-1], dy[1:]
-    return np.stack([(s0 + s1 - 2 * delta) / (h * h), (3 * delta - 2 * s0 - s1) / h, s0,
-                     y[:-1]])
-
-
 def hermite_pieces(x, values, slopes, segments):
     """Segment-wise cubic Hermite interpolant of columns ``values`` (n, cols) along ``x``.
 
@@ -88,11 +78,9 @@ class _Piecewise:
         for a, b in bounds:
             xs, ys = x[a:b], columns[a:b]
             if slopes is not None:
-                c = _hermite_coefficients(xs, ys, slopes[a:b])
+                c = hermite_coefficients(xs, ys, slopes[a:b])
             elif method == "pchip":
-                with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-                    pp = PchipInterpolator(xs, ys, axis=0)  # flat pieces divide by 0 inside
-                c = pp.c  # (4, n-1, cols), local coordinate x - x_k
+                c = pchip_coefficients(xs, ys)  # (4, n-1, cols), local coordinate x - x_k
             else:
                 slope = np.diff(ys, axis=0) / np.diff(xs)[:, None]
                 c = np.stack([np.zeros_like(slope), np.zeros_like(slope), slope, ys[:-1]])

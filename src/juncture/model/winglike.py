@@ -25,6 +25,7 @@ import numpy as np
 
 from ..errors import GeometryError
 from ._arrays import check_finite, check_increasing, frozen
+from ._pchip import pchip_coefficients
 from .airfoil import Airfoil, ChordwiseInterpolation, interpolate_chordwise, surface_offsets
 
 __all__ = ["WingLike", "WingKind", "Side"]
@@ -198,12 +199,10 @@ class WingLike:
         :func:`interpolate_chordwise`.
         """
         if side not in self._poly:
-            from scipy.interpolate import PchipInterpolator
-
             t = self.x_over_c / 100.0
             off = self._offsets(side)  # (n_sections, n_stations)
             if self.chordwise == "pchip":
-                coefs = PchipInterpolator(t, off.T, axis=0).c  # (4, n_st - 1, n_sec)
+                coefs = pchip_coefficients(t, off.T)  # (4, n_st - 1, n_sec)
             else:
                 slope = np.diff(off, axis=1).T / np.diff(t)[:, None]
                 coefs = np.stack([np.zeros_like(slope), np.zeros_like(slope), slope,
