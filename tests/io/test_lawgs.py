@@ -219,7 +219,7 @@ def test_symmetry_codes_and_duplicate_names(tmp_path):
     ("'T'\n'W'\n1 1 /\n", r"ends \('/'\) before NLINE and NPNT", 3),
     ("'T'\n'W'\n1 1 1 0 0 0 0 0 0 0 1 1 1 0\n1 2e999 3\n", r"line 4, columns 3-7: number out "
      r"of range in object 'W': '2e999'", 4),
-    ("\n  \n", "empty file: expected a LaWGS title record", None),
+    ("\n  \n", "empty file: expected a LaWGS file", None),
 ])
 def test_errors_name_line_and_token(tmp_path, text, match, line):
     with pytest.raises(DeckError, match=match) as info:

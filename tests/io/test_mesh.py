@@ -157,7 +157,7 @@ def test_errors_and_no_half_written_files(tmp_path, monkeypatch):
         raise OSError("disk full")
 
     monkeypatch.setattr(meshio, "write", boom)
-    with pytest.raises(OSError, match="disk full"):
+    with pytest.raises(JunctureError, match=r"cannot write .*old.stl: disk full"):
         mesh.write_stl(_box(), target)
     assert target.read_bytes() == b"old"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["old.stl"]
@@ -177,3 +177,83 @@ def test_input_not_mutated(tmp_path):
     mesh.write_vtk(box, tmp_path / "b.vtk")
     for k in box:
         np.testing.assert_array_equal(box[k], before[k])
+
+
+# -- VTK files that VTK itself reads ----------------------------------------------------------
+
+def _transport():
+    import warnings
+
+    from tests.support import EXAMPLE_DECK
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.read(EXAMPLE_DECK)
+
+
+@pytest.mark.parametrize("binary", [True, False], ids=["binary", "ascii"])
+def test_legacy_vtk_uses_only_types_vtk_9_reads(tmp_path, binary):
+    path = mesh.write_vtk(_box(), tmp_path / "b.vtk", binary=binary)
+    n = len(mesh.triangulate(_box())[1])
+    data = path.read_bytes()
+    assert data.startswith(b"# vtk DataFile Version 4.2\n")
+    assert b"vtktype" not in data  # meshio 5.3's vtktypeint32 / vtktypeint64: VTK 9 refuses them
+    assert f"\nCELLS {n} {4 * n}\n".encode() in data
+    assert f"\nCELL_DATA {n}\nFIELD FieldData 1\nnetwork 1 {n} int\n".encode() in data
+    assert (b"\nBINARY\n" if binary else b"\nASCII\n") in data[:200]
+
+
+@pytest.mark.parametrize("fmt", ["vtk", "vtu"])
+@pytest.mark.parametrize("binary", [True, False], ids=["binary", "ascii"])
+def test_meshio_reads_back_exactly(tmp_path, capfd, fmt, binary):
+    cfg = _transport()
+    points, tri, ids, _ = mesh.triangulate(cfg)
+    path = mesh.write(cfg, tmp_path / f"sst.{fmt}", binary=binary)
+    assert capfd.readouterr() == ("", "")  # meshio's "ASCII only for debugging" is not printed
+    m = meshio.read(path)
+    # meshio writes ASCII VTU with 12 significant digits; the others are exact
+    rtol = 1e-11 if (fmt, binary) == ("vtu", False) else 0.0
+    np.testing.assert_allclose(m.points, points, rtol=rtol, atol=0.0)
+    assert [c.type for c in m.cells] == ["triangle"]
+    np.testing.assert_array_equal(m.cells[0].data, tri)
+    np.testing.assert_array_equal(m.cell_data["network"][0], ids)
+
+
+@pytest.mark.parametrize("fmt", ["vtk", "vtu"])
+@pytest.mark.parametrize("binary", [True, False], ids=["binary", "ascii"])
+def test_vtk_reads_the_files(tmp_path, fmt, binary):
+    """VTK's own readers (not meshio) load both files without an error or warning."""
+    vtk = pytest.importorskip("vtk", reason="an independent VTK reader: pip install vtk to run")
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    cfg = _transport()
+    points, tri, ids, _ = mesh.triangulate(cfg)
+    path = mesh.write(cfg, tmp_path / f"sst.{fmt}", binary=binary)
+    readers = ([vtk.vtkXMLUnstructuredGridReader()] if fmt == "vtu" else
+               [vtk.vtkUnstructuredGridReader(), vtk.vtkGenericDataObjectReader()])
+    window = vtk.vtkStringOutputWindow()
+    previous = vtk.vtkOutputWindow.GetInstance()
+    vtk.vtkOutputWindow.SetInstance(window)
+    try:
+        for reader in readers:
+            events = []
+            for event in ("ErrorEvent", "WarningEvent"):
+                reader.AddObserver(event, lambda obj, ev, seen=events: seen.append(ev))
+            reader.SetFileName(str(path))
+            reader.Update()
+            grid = reader.GetOutput()
+            assert events == [] and window.GetOutput() == "", window.GetOutput()
+            assert grid.GetNumberOfPoints() == len(points)
+            assert grid.GetNumberOfCells() == len(tri)
+            rtol = 1e-11 if (fmt, binary) == ("vtu", False) else 0.0
+            np.testing.assert_allclose(vtk_to_numpy(grid.GetPoints().GetData()), points,
+                                       rtol=rtol, atol=0.0)
+            types = {grid.GetCellType(i) for i in range(grid.GetNumberOfCells())}
+            assert types == {vtk.VTK_TRIANGLE}
+            conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray())
+            np.testing.assert_array_equal(conn.reshape(-1, 3), tri)
+            network = grid.GetCellData().GetArray("network")
+            assert network.GetDataType() == vtk.VTK_INT
+            np.testing.assert_array_equal(vtk_to_numpy(network), ids)
+    finally:
+        vtk.vtkOutputWindow.SetInstance(previous)

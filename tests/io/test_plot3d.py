@@ -126,7 +126,7 @@ def test_surface_in_another_index_plane(tmp_path):
     ("4\n2 2 1\n", r"NBLK = 4 needs 12 positive integer dimensions next"),
     ("1\n2 1 1\n1 2 3 x 5 6\n", r"line 3, column 7: expected a number, found 'x'"),
     ("1\n1 1 1\n1 / 3\n", "'/' is not allowed"),
-    ("", "0 numbers fit no layout"),
+    ("", "empty file: expected a formatted \\(ASCII\\) Plot3D grid"),
     ("1\n1 1 1\n1 -1e400 3\n", r"number out of range \(number 6 of the file\)"),
 ])
 def test_errors(tmp_path, text, match):

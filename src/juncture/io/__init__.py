@@ -11,10 +11,12 @@ from ._registry import (
     reader_formats,
     to_geometry,
     write,
+    writer_extensions,
     writer_formats,
 )
 
-__all__ = ["read", "write", "formats", "reader_formats", "writer_formats", "atomic_output",
+__all__ = ["read", "write", "formats", "reader_formats", "writer_formats", "writer_extensions",
+           "atomic_output",
            "to_geometry"]
 
 # Each import registers its format(s) in its last lines.

@@ -34,13 +34,15 @@ import numpy as np
 from ..errors import DeckError, JunctureError, JunctureWarning
 
 __all__ = ["CardReader", "split_lines", "format_real", "format_card", "format_ints",
-           "FIELD_WIDTH", "FIELDS_PER_CARD", "LABEL_COLUMN"]
+           "FIELD_WIDTH", "FIELDS_PER_CARD", "LABEL_COLUMN", "NOISE_ULPS"]
 
 #: Width of one real field (``F7.0``) and the number of fields on one card.
 FIELD_WIDTH = 7
 FIELDS_PER_CARD = 10
 #: First column (1-based) of the identification label on written cards.
 LABEL_COLUMN = 73
+#: A value written as a text this many units in the last place away is written silently.
+NOISE_ULPS = 4
 
 _REAL = re.compile(r"([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+))(?:[EeDd]([+-]?[0-9]+)|([+-][0-9]+))?",
                    re.ASCII)
@@ -357,7 +359,10 @@ def format_card(values, label="", what="value"):
     """Card lines (no newline) for a list of reals, ten to a card, label in columns 73-80.
 
     A value that cannot be written exactly in 7 columns is written as the nearest text that
-    fits, with a :class:`JunctureWarning` naming ``what``.
+    fits, with a :class:`JunctureWarning` naming ``what``, unless that text is within
+    :data:`NOISE_ULPS` units in the last place of the value: such a value is a decimal of the
+    deck seen through floating-point arithmetic (a FUSARD area that went to a radius
+    ``sqrt(A / pi)`` and back is 1 or 2 ulps off), and the text is the decimal it came from.
     """
     values = np.asarray(values, dtype=float).ravel()
     lines = []
@@ -365,7 +370,7 @@ def format_card(values, label="", what="value"):
         parts = []
         for i, v in enumerate(values[start:start + FIELDS_PER_CARD], start):
             text, exact = format_real(v)
-            if not exact:
+            if not exact and abs(float(text) - v) > NOISE_ULPS * math.ulp(v):
                 warnings.warn(f"{what} {i + 1} = {float(v)!r} cannot be written exactly in 7 "
                               f"columns; wrote {text.strip()!r} (difference "
                               f"{float(text) - float(v):.3g})", JunctureWarning, stacklevel=3)

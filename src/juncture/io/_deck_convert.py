@@ -3,7 +3,9 @@
 Reading keeps the deck's meaning exactly: percent-chord stations and ordinates stay percent
 chord, camber stays absolute, fuselage areas become radii r = sqrt(A / pi) (formats.md 1.5).
 The raw deck configuration is kept as ``Configuration.source``; writing a configuration back
-reuses every raw record whose component is unchanged, so read -> write -> read is exact.
+reuses every raw record whose component is unchanged, so read -> write -> read is exact. The
+case cards written are those of ``Configuration.source.cases`` (a deck configuration, or the
+cases of a juncture JSON/TOML model, :class:`juncture.io.jsonmodel.ModelSource`).
 
 Component names: ``wing``, ``body``, ``pod k``, ``fin k``, and ``canard k`` or ``tail k``
 (a canard card set whose inboard leading edge lies aft of the wing's mid root chord is
@@ -17,8 +19,10 @@ import numpy as np
 from ..errors import DeckError, GeometryError
 from ..model import ArbitraryBody, CircularBody, Configuration, WingLike
 from ._deck import (
+    CASE_FIELDS,
     ControlCard,
     DeckCanard,
+    DeckCase,
     DeckConfiguration,
     DeckFin,
     DeckFuselage,
@@ -331,10 +335,24 @@ def configuration_to_deck(cfg):
     ref = None
     if cfg.reference_area is not None:
         ref = (cfg.reference_area, cfg.reference_chord or 0.0, cfg.moment_x or 0.0)
-    cases = src.cases if src is not None else ()
+    cases = _single_configuration_cases(getattr(cfg.source, "cases", None) or ())
     dc = DeckConfiguration(cfg.title, control, ref, wing, fus, raw_pods, raw_fins, raw_cans,
                            cases)
     return Deck((dc,))
+
+
+def _single_configuration_cases(cases):
+    """The case cards of a configuration written alone: the last one gets NCON = 0.
+
+    A case read from configuration k of a multi-configuration deck may carry NCON = 1 ("a new
+    configuration follows"); in a deck holding this configuration only, none follows.
+    """
+    cases = tuple(cases)
+    if cases and cases[-1].ncon != 0:
+        last = cases[-1]
+        fields = {name: getattr(last, name) for name in CASE_FIELDS}
+        cases = cases[:-1] + (DeckCase(last.ncase, **{**fields, "ncon": 0}, xrest=last.xrest),)
+    return cases
 
 
 def _splits_inboard(c):

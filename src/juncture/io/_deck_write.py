@@ -15,7 +15,7 @@ import warnings
 import numpy as np
 
 from ..errors import DeckError, JunctureError
-from ._cards import CardReader, format_card, format_ints
+from ._cards import LABEL_COLUMN, CardReader, format_card, format_ints
 from ._deck import CASE_FIELDS
 
 __all__ = ["format_deck"]
@@ -189,8 +189,8 @@ def _case_text(case, k):
                 return case.text
         except DeckError:
             pass
-    return case.ncase.ljust(4) + format_ints(case.fields(), 4, label=f"CASE {k}"[:8],
-                                             what="case card field")
+    ints = format_ints(case.fields(), 4, what="case card field")
+    return (case.ncase.ljust(4) + ints).ljust(LABEL_COLUMN - 1) + f"CASE {k}"[:8]
 
 
 def format_deck(deck):

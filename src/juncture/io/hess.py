@@ -26,7 +26,7 @@ import numpy as np
 from ..errors import DeckError
 from ..geometry import Geometry
 from ._freeformat import decode, parse_real, quote, unquote
-from ._registry import atomic_output, register_format, to_geometry
+from ._registry import atomic_output, read_input, register_format, to_geometry
 
 __all__ = ["read", "write"]
 
@@ -82,7 +82,8 @@ class _Lines:
 
     def take(self, expected):
         if self.k >= len(self.items):
-            raise DeckError(f"file ended, expected {expected}", path=self.path, line=self.last)
+            raise DeckError(f"file ended, expected {expected}", path=self.path,
+                            line=self.last or None)
         self.k += 1
         return self.items[self.k - 1]
 
@@ -163,11 +164,8 @@ def read(path):
         out of sequence, a repeated name, a point that is not three numbers, an unknown
         symmetry plane, a missing ``END``.
     """
-    try:
-        with open(path, "rb") as fh:
-            text = decode(fh.read())
-    except OSError as exc:
-        raise DeckError(f"cannot open file: {exc.strerror}", path=path) from None
+    text = decode(read_input(path, f"Hess network listing (text starting '{_MAGIC} "
+                                   f"{_VERSION}')"))
     lines = _Lines(text, path)
     no, line = lines.take(f"the header '{_MAGIC} {_VERSION}'")
     words = line.split()

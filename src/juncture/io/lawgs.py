@@ -21,12 +21,14 @@ and 2); codes 2 and 3 are UNVERIFIED (recalled from TM-85767, formats.md section
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from ..errors import DeckError
+from ..errors import DeckError, GeometryError
 from ..geometry import Geometry, mirror_points
 from ._freeformat import FAST, decode, line_tokens, quote, unquote
-from ._registry import atomic_output, register_format, to_geometry
+from ._registry import atomic_output, read_input, register_format, to_geometry
 
 __all__ = ["read", "write", "placement_matrix"]
 
@@ -166,7 +168,8 @@ def _place(local, rotation, translation, scale):
 
 def _integer(tok, field, obj, path, low=None, high=None):
     v = tok.value
-    if v != int(v) or (low is not None and v < low) or (high is not None and v > high):
+    if not math.isfinite(v) or v != int(v) or (low is not None and v < low) \
+            or (high is not None and v > high):
         rng = (f" >= {low}" if high is None else f" in {low}..{high}") if low is not None else ""
         raise DeckError(f"{field} of object {obj!r} must be an integer{rng}, found {tok.text!r}",
                         path=path, line=tok.line, columns=tok.columns)
@@ -190,6 +193,9 @@ def _read_object(cur, name, rest, path):
             head[field] = _integer(tok, field, name, path, low=0, high=3)
         elif field == "NOBJ":
             head[field] = _integer(tok, field, name, path)
+        elif not math.isfinite(tok.value):
+            raise DeckError(f"{field} of object {name!r} must be a finite number, found "
+                            f"{tok.text!r}", path=path, line=tok.line, columns=tok.columns)
         else:
             head[field] = tok.value
     for field, default in zip(_HEADER_FIELDS[3:], _HEADER_DEFAULTS, strict=True):
@@ -256,11 +262,7 @@ def read(path):
     >>> geo.networks["FIRST CYLINDER"].shape                 # doctest: +SKIP
     (2, 7, 3)
     """
-    try:
-        with open(path, "rb") as fh:
-            text = decode(fh.read())
-    except OSError as exc:
-        raise DeckError(f"cannot open file: {exc.strerror}", path=path) from None
+    text = decode(read_input(path, "LaWGS file (text: title record, then objects)"))
     lines = text.replace("\x1a", "").splitlines()
     cur = _Cursor(lines, path)
     if not cur.next_nonblank():
@@ -289,7 +291,11 @@ def read(path):
         shift = np.array([head["TX"], head["TY"], head["TZ"]], dtype=float)
         scale = np.array([head["XSCALE"], head["YSCALE"], head["ZSCALE"]], dtype=float)
         name = _unique(label, used)
-        networks[name] = _place(local, rot, shift, scale)
+        with np.errstate(over="ignore", invalid="ignore"):
+            networks[name] = _place(local, rot, shift, scale)
+        if not np.all(np.isfinite(networks[name])):
+            raise DeckError(f"object {name!r}: its placement (RX RY RZ TX TY TZ XSCALE YSCALE "
+                            "ZSCALE) takes coordinates out of range", path=path, line=no)
         if head["ISYML"]:
             image = mirror_points(local, _PLANE_OF_CODE[head["ISYML"]])
             networks[_unique(f"{label} local image", used)] = _place(image, rot, shift,
@@ -298,8 +304,11 @@ def read(path):
             symmetry[name] = _PLANE_OF_CODE[head["ISYMG"]]
         log.append(f"lawgs object {head['NOBJ']} {name!r}: NLINE {head['NLINE']}, NPNT "
                    f"{head['NPNT']}, ISYML {head['ISYML']}, ISYMG {head['ISYMG']}")
-    return Geometry(networks=networks, symmetry=symmetry, title=title,
-                    log=(f"read LaWGS {path}",) + tuple(log))
+    try:
+        return Geometry(networks=networks, symmetry=symmetry, title=title,
+                        log=(f"read LaWGS {path}",) + tuple(log))
+    except GeometryError as exc:  # a check of the Geometry the reader does not make itself
+        raise DeckError(str(exc), path=path) from None
 
 
 def _fmt(values, digits):
@@ -355,8 +364,8 @@ def _sniff(head):
         toks = list(line_tokens(lines[2], 3, None))
     except DeckError:
         return False
-    return len(toks) >= 3 and all(t.value is not None and t.value == int(t.value)
-                                  for t in toks[:3])
+    return len(toks) >= 3 and all(t.value is not None and math.isfinite(t.value)
+                                  and t.value == int(t.value) for t in toks[:3])
 
 
 register_format("lawgs", [".wgs", ".lawgs"], reader=read, writer=write, sniff=_sniff)

@@ -1,4 +1,4 @@
-"""Triangle-mesh writers through meshio: STL, VTK (legacy), VTU, OBJ. Writers only.
+"""Triangle-mesh writers: STL, VTU and OBJ through meshio, legacy VTK directly. Writers only.
 
 Every network (and, by default, its mirror image) is split into triangles. Quad
 ``(i, j), (i, j+1), (i+1, j+1), (i+1, j)`` (i = n-line, j = point) becomes the triangles
@@ -9,16 +9,27 @@ Triangles of zero area (pointed tips, collapsed nose points) are dropped; no poi
 within or across networks. VTK and VTU carry the cell-data array ``"network"``: the index of
 the triangle's network in :meth:`Geometry.mirrored_networks` order (images after the
 networks), so a viewer can colour components.
+
+Legacy ``.vtk`` is written here, not by meshio: meshio 5.3 writes the ``DataFile Version 5.1``
+layout with data arrays typed ``vtktypeint32`` / ``vtktypeint64``, which VTK 9's
+``vtkUnstructuredGridReader`` refuses ("Unsupported data type: vtktypeint32"). This writer
+produces ``DataFile Version 4.2`` (VTK file-formats guide, "Simple Legacy Formats"): POINTS as
+``double``, CELLS with a leading count per cell, CELL_TYPES 5 (VTK_TRIANGLE) and the cell data
+as a one-component ``FIELD`` array ``network`` of type ``int``, big-endian in the binary form,
+as VTK 9, ParaView and meshio read it. VTU (XML, binary data zlib-compressed by meshio) needs
+no such care.
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import GeometryError, MissingDependencyError
-from ._registry import atomic_path, register_format, to_geometry
+from ._registry import atomic_output, atomic_path, register_format, to_geometry
 
 __all__ = ["triangulate", "write", "write_stl", "write_vtk", "write_vtu", "write_obj"]
 
@@ -83,7 +94,7 @@ def triangulate(obj, *, mirror=True):
 
 
 def write(obj, path, *, file_format=None, mirror=True, binary=True):
-    """Write the triangulated networks with meshio.
+    """Write the triangulated networks (legacy VTK directly, the others with meshio).
 
     Parameters
     ----------
@@ -109,21 +120,56 @@ def write(obj, path, *, file_format=None, mirror=True, binary=True):
     if fmt not in _MESHIO_NAME:
         raise GeometryError(f"mesh format must be one of {', '.join(_MESHIO_NAME)}, found "
                             f"{fmt!r}")
-    try:
-        import meshio
-    except ImportError:
-        raise MissingDependencyError("writing STL/VTK/VTU/OBJ needs meshio: pip install "
-                                     "meshio") from None
     points, tri, net_id, names = triangulate(obj, mirror=mirror)
     if len(tri) == 0:
         raise GeometryError(f"nothing to write to {path.name}: no triangle of non-zero area "
                             f"in {len(names)} networks")
-    cell_data = {"network": [net_id.astype(np.int32)]} if fmt in ("vtk", "vtu") else None
+    if fmt == "vtk":
+        title = getattr(to_geometry(obj), "title", "")
+        with atomic_output(path, "wb") as fh:
+            _write_legacy_vtk(fh, points, tri, net_id, binary, title)
+        return path
+    try:
+        import meshio
+    except ImportError:
+        raise MissingDependencyError("writing STL/VTU/OBJ needs meshio: pip install "
+                                     "meshio") from None
+    cell_data = {"network": [net_id.astype(np.int32)]} if fmt == "vtu" else None
     mesh = meshio.Mesh(points, [("triangle", tri)], cell_data=cell_data)
     kwargs = {} if fmt == "obj" else {"binary": binary}
-    with atomic_path(path, suffix=path.suffix or f".{fmt}") as tmp:
+    # meshio prints notes ("VTU ASCII files are only meant for debugging") on stderr; io
+    # never prints
+    with atomic_path(path, suffix=path.suffix or f".{fmt}") as tmp, \
+            contextlib.redirect_stderr(io.StringIO()):
         meshio.write(tmp, mesh, file_format=_MESHIO_NAME[fmt], **kwargs)
     return path
+
+
+def _write_legacy_vtk(fh, points, tri, net_id, binary, title=""):
+    """Legacy VTK 4.2 unstructured grid of triangles with cell data ``network`` (int)."""
+    if len(points) > np.iinfo(np.int32).max:
+        raise GeometryError(f"{len(points)} points do not fit the 32-bit indices of legacy "
+                            "VTK; write .vtu")
+    n, m = len(points), len(tri)
+    cells = np.column_stack([np.full(m, 3), tri])
+    title = " ".join(f"juncture {title}".split())[:255]
+    blocks = [
+        (f"POINTS {n} double", np.asarray(points, dtype=float), ">f8"),
+        (f"CELLS {m} {4 * m}", cells, ">i4"),
+        (f"CELL_TYPES {m}", np.full((m, 1), 5), ">i4"),
+        (f"CELL_DATA {m}\nFIELD FieldData 1\nnetwork 1 {m} int",
+         np.asarray(net_id).reshape(-1, 1), ">i4"),
+    ]
+    fh.write(f"# vtk DataFile Version 4.2\n{title}\n{'BINARY' if binary else 'ASCII'}\n"
+             "DATASET UNSTRUCTURED_GRID\n".encode("ascii", "replace"))
+    for head, data, dtype in blocks:
+        fh.write(head.encode("ascii") + b"\n")
+        if binary:
+            fh.write(np.ascontiguousarray(data, dtype=dtype).tobytes() + b"\n")
+        else:
+            words = (repr if dtype == ">f8" else str)
+            rows = data.astype(float if dtype == ">f8" else np.int64).tolist()
+            fh.write(("\n".join(" ".join(map(words, r)) for r in rows) + "\n").encode("ascii"))
 
 
 def write_stl(obj, path, *, mirror=True, binary=True):
@@ -132,7 +178,7 @@ def write_stl(obj, path, *, mirror=True, binary=True):
 
 
 def write_vtk(obj, path, *, mirror=True, binary=True):
-    """Legacy VTK with cell data ``"network"``: see :func:`write`."""
+    """Legacy VTK (DataFile Version 4.2) with cell data ``"network"``: see :func:`write`."""
     return write(obj, path, file_format="vtk", mirror=mirror, binary=binary)
 
 

@@ -23,7 +23,7 @@ import numpy as np
 from ..errors import DeckError
 from ..geometry import Geometry
 from ._freeformat import decode, line_tokens
-from ._registry import atomic_output, register_format, to_geometry
+from ._registry import atomic_output, read_input, register_format, to_geometry
 
 __all__ = ["read", "write"]
 
@@ -39,11 +39,15 @@ def _all_numbers(text, path):
         pass  # D exponents, r*c, or a bad token: read line by line for the exact place
     vals = []
     for no, line in enumerate(text.splitlines(), start=1):
-        for tok in line_tokens(line, no, path):
-            if tok.value is None:
-                raise DeckError("'/' is not allowed in a Plot3D file", path=path, line=no,
-                                columns=tok.columns)
-            vals.append(tok.value)
+        try:
+            for tok in line_tokens(line, no, path):
+                if tok.value is None:
+                    raise DeckError("'/' is not allowed in a Plot3D file", path=path, line=no,
+                                    columns=tok.columns)
+                vals.append(tok.value)
+        except DeckError as exc:
+            raise DeckError(f"{exc.reason} (a formatted Plot3D grid holds numbers only)",
+                            path=exc.path, line=exc.line, columns=exc.columns) from None
     return np.array(vals, dtype=float)
 
 
@@ -115,14 +119,7 @@ def read(path):
     >>> list(geo.networks)                                    # doctest: +SKIP
     ['block 1', 'block 2']
     """
-    try:
-        with open(path, "rb") as fh:
-            raw = fh.read()
-    except OSError as exc:
-        raise DeckError(f"cannot open file: {exc.strerror}", path=path) from None
-    if b"\x00" in raw[:4096]:
-        raise DeckError("a binary (unformatted) file: juncture reads formatted (ASCII) Plot3D "
-                        "only", path=path)
+    raw = read_input(path, "formatted (ASCII) Plot3D grid")
     v = _all_numbers(decode(raw), path)
     if not np.all(np.isfinite(v)):
         raise DeckError(f"number out of range (number {int(np.argmin(np.isfinite(v))) + 1} of "

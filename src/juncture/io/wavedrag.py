@@ -30,9 +30,9 @@ NP <= 9, NPODOR 4..30, abs(NF) <= 6, NFINOR 3..10, abs(NCAN) <= 2, abs(NCANOR) 3
 
 from __future__ import annotations
 
-from pathlib import Path
+import warnings
 
-from ..errors import DeckError
+from ..errors import JunctureWarning
 from ._deck import (
     ControlCard,
     Deck,
@@ -47,7 +47,7 @@ from ._deck import (
 )
 from ._deck_read import parse_deck
 from ._deck_write import format_deck
-from ._registry import atomic_output, register_format
+from ._registry import atomic_output, read_input, register_format, require_configuration
 
 __all__ = ["read_deck", "parse_deck", "format_deck", "write_deck", "read", "write", "Deck",
            "DeckConfiguration", "ControlCard", "DeckWing", "DeckFuselage",
@@ -77,7 +77,8 @@ def read_deck(path):
     Raises
     ------
     DeckError
-        If the file cannot be opened or a card is malformed (with line and columns).
+        If the file cannot be opened, is empty or binary, or a card is malformed (with line
+        and columns).
 
     Examples
     --------
@@ -89,22 +90,36 @@ def read_deck(path):
     >>> print(format_deck(deck).splitlines()[2])
        16.0   12.5    0.0                                                   REFA
     """
-    try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise DeckError(f"cannot open file: {exc.strerror or exc}", path=path) from None
+    data = read_input(path, "wave-drag deck (text cards: title, 24I3 control card, ...)")
     return parse_deck(_decode(data), str(path))
 
 
 def write_deck(deck, path):
     """Write ``deck`` to ``path`` (UTF-8, LF line endings); the file appears whole or not at all.
 
+    Values that cannot be written exactly in 7 columns are rounded to the nearest text that
+    fits, with one :class:`~juncture.errors.JunctureWarning` naming ``path``, the number of
+    such values and the first of them (:func:`format_deck` warns once per value).
+
     Raises
     ------
     JunctureError
-        If a record does not agree with its control card (see :func:`format_deck`).
+        If a record does not agree with its control card (see :func:`format_deck`), or
+        ``path`` cannot be written.
     """
-    text = format_deck(deck)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        text = format_deck(deck)
+    rounded = [str(w.message) for w in caught if issubclass(w.category, JunctureWarning)]
+    for w in caught:
+        if not issubclass(w.category, JunctureWarning):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    if len(rounded) == 1:
+        warnings.warn(f"{path}: {rounded[0]}", JunctureWarning, stacklevel=2)
+    elif rounded:
+        warnings.warn(f"{path}: {len(rounded)} values cannot be written exactly in 7 columns "
+                      f"and were rounded to the nearest text that fits; the first: "
+                      f"{rounded[0]}", JunctureWarning, stacklevel=2)
     with atomic_output(path, "w", encoding="utf-8", newline="\n") as fh:
         fh.write(text)
 
@@ -128,7 +143,9 @@ def _read_configuration(path, configuration=0):
 def _write_configuration(obj, path):
     from ._deck_convert import configuration_to_deck
 
-    write_deck(obj if isinstance(obj, Deck) else configuration_to_deck(obj), path)
+    if not isinstance(obj, Deck):
+        obj = configuration_to_deck(require_configuration(obj, path, "wave-drag deck"))
+    write_deck(obj, path)
 
 
 _FLAG_RANGES = ((0, 2), (-1, 2), (-1, 2), (0, 2), (0, 2), (0, 2), (-1, 1))
