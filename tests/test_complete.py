@@ -91,7 +91,8 @@ def test_bad_options_are_clear():
 
 
 @pytest.mark.parametrize("fillet, keep_area, options, match", [
-    ("cubic", False, {"theta_u_deg": -10.0}, r"theta_u_deg = -10.0: expected an angle in \(0, 90\)"),
+    ("cubic", False, {"theta_u_deg": -10.0},
+     r"theta_u_deg = -10.0: expected an angle in \(0, 90\)"),
     ("cubic", False, {"theta_u_deg": 90.0}, "theta_u_deg = 90.0"),
     ("cubic", False, {"theta_u_deg": float("nan")}, "theta_u_deg = nan"),
     ("cubic", False, {"blend_length": -3.0}, "blend_length = -3.0: expected a length > 0"),
@@ -180,3 +181,10 @@ def test_arbitrary_section_fuselage(blocks):
 def test_fillets_need_a_circular_fuselage():
     with pytest.raises(jc.GeometryError, match="fillets \\(TM-4406\\) need a circular"):
         jc.complete(squashed(example()), "cubic")
+
+
+def test_the_public_complete_is_the_function_whatever_was_imported_first():
+    import juncture.completion
+
+    assert jc.complete is juncture.completion.complete and callable(jc.complete)
+    assert jc.CompleteOptions is juncture.completion.CompleteOptions

@@ -94,7 +94,7 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
         The (possibly re-designed) body.
     upper, lower : FilletLines
         Fillet lines of each surface; for no fillet, degenerate lines at the intersection
-        (see :func:`juncture.complete.sharp_fillet`).
+        (see :func:`juncture.completion.sharp_fillet`).
     blocks : {4, 6}
     n_body_points : int, optional
         Points per half cross-section of the body ahead and aft (default: the body's own

@@ -121,10 +121,18 @@ def test_spec_errors(spec, match):
 def test_spec_file_errors(tmp_path):
     bad = tmp_path / "bad.json"
     bad.write_text('{"body": {"radius": 1.0,}}')
-    with pytest.raises(SpecError, match="line 1: invalid JSON"):
+    with pytest.raises(SpecError, match=r"bad.json, line 1, column \d+: invalid JSON"):
         load_spec(bad)
-    with pytest.raises(SpecError, match="cannot read spec"):
+    with pytest.raises(SpecError, match="missing.json: cannot read the blend spec"):
         load_spec(tmp_path / "missing.json")
+    binary = tmp_path / "binary.json"
+    binary.write_bytes(b"\x89PNG\r\n\x1a\n\xff\xfe")
+    with pytest.raises(SpecError, match="binary.json: expected a JSON blend spec, found binary"):
+        load_spec(binary)
+    listed = tmp_path / "list.json"
+    listed.write_text("[1, 2]")
+    with pytest.raises(SpecError, match="list.json: blend spec: .*expected an object"):
+        load_spec(listed)
 
 
 def test_run_rejects_an_unknown_output_format(tmp_path):

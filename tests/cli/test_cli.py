@@ -92,10 +92,10 @@ def test_missing_file_is_exit_2(tmp_path, capsys):
 
 def test_entry_point_runs_as_a_program(tmp_path):
     bad = _bad(tmp_path, deck_lines()[:8])
-    run = subprocess.run([sys.executable, "-m", "juncture.cli", "info", str(bad)],
+    run = subprocess.run([sys.executable, "-m", "juncture", "info", str(bad)],
                          capture_output=True, text=True)
     assert run.returncode == 2 and "Traceback" not in run.stderr
-    ok = subprocess.run([sys.executable, "-m", "juncture.cli", "info", str(PDAS_DECK)],
+    ok = subprocess.run([sys.executable, "-m", "juncture", "info", str(PDAS_DECK)],
                         capture_output=True, text=True)
     assert ok.returncode == 0 and "body" in ok.stdout
 
@@ -112,7 +112,8 @@ def test_complete_writes_networks_summary_and_figures(tmp_path, capsys):
 
     out = tmp_path / "run"
     assert main(["complete", str(EXAMPLE_DECK), "-o", str(out), "--fillet", "cubic",
-                 "--keep-area", "--format", "wgs", "p3d", "stl", "--blocks", "6"]) == 0
+                 "--keep-area", "--format", "wgs", "p3d", "stl", "--blocks", "6",
+                 "--figures"]) == 0
     for name in ("geometry.wgs", "geometry.p3d", "geometry.stl", "summary.json", "views.png",
                  "intersection.png", "lower_intersection.png", "fillet_sections.png",
                  "areas.png"):

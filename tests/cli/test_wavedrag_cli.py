@@ -94,4 +94,4 @@ def test_output_directory_gets_the_plot_and_numbers(tmp_path, capsys):
 
 def test_keep_area_without_fillet_is_a_usage_error(capsys):
     assert main(["wavedrag", str(PDAS_DECK), "--keep-area"]) == 2
-    assert "--keep-area needs a fillet" in capsys.readouterr().err
+    assert "argument --keep-area: needs --fillet cubic or circular" in capsys.readouterr().err

@@ -67,7 +67,7 @@ def test_added_area_of_one_station_by_raster():
 def test_no_fillet_adds_no_area():
     cfg = wing_body()
     wing, body = cfg["wing"], cfg["body"]
-    from juncture.complete import sharp_fillet
+    from juncture.completion import sharp_fillet
 
     iu, il = intersect_body(wing, body, "upper"), intersect_body(wing, body, "lower")
     x, a = fillet_added_area(body, sharp_fillet(iu), sharp_fillet(il), iu, il)

@@ -123,14 +123,28 @@ def load_spec(source):
         On unreadable JSON, unknown fields, missing or ill-typed values (names the field).
     """
     if isinstance(source, dict):
-        given = source
-    else:
-        try:
-            given = json.loads(Path(source).read_text())
-        except OSError as exc:
-            raise SpecError(f"cannot read spec {str(source)!r}: {exc.strerror}") from None
-        except json.JSONDecodeError as exc:
-            raise SpecError(f"{source}: line {exc.lineno}: invalid JSON ({exc.msg})") from None
+        return _checked(source)
+    try:
+        raw = Path(source).read_bytes()
+    except OSError as exc:
+        raise SpecError(f"{source}: cannot read the blend spec ({exc.strerror or exc})") \
+            from None
+    try:
+        given = json.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise SpecError(f"{source}: expected a JSON blend spec, found binary (non UTF-8) "
+                        f"data") from None
+    except json.JSONDecodeError as exc:
+        raise SpecError(f"{source}, line {exc.lineno}, column {exc.colno}: invalid JSON "
+                        f"({exc.msg})") from None
+    try:
+        return _checked(given)
+    except SpecError as exc:
+        raise SpecError(f"{source}: blend spec: {exc}") from None
+
+
+def _checked(given):
+    """The spec ``given`` (a parsed object) with defaults filled, every field checked."""
     spec = _merge(DEFAULTS, given, "")
     if spec["body"]["section"] is None:
         _number(spec, "body.radius", positive=True)

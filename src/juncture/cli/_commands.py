@@ -1,0 +1,291 @@
+"""One function per command: parse the arguments' meaning, call the public API, print.
+
+Each takes the parsed arguments and a :class:`~juncture._progress.Progress` factory and
+returns the exit status. Bad input surfaces as a :class:`~juncture.errors.JunctureError`,
+which :func:`juncture.cli.main` prints as one line.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from ..errors import JunctureError, OptionError
+from ._describe import completion_summary, describe
+from ._parser import COMPLETE_FLAGS, fail
+
+__all__ = ["info", "convert", "complete", "wavedrag", "massprops", "blend",
+           "read_configuration", "output_dir", "write_outputs", "write_report"]
+
+
+def _say(args, *lines):
+    if not getattr(args, "quiet", False):
+        for line in lines:
+            print(line)
+
+
+def read_configuration(path, command):
+    """The components in ``path`` (a deck or a juncture model), or one clear error."""
+    from ..io import read
+    from ..model import Configuration
+
+    obj = read(path)
+    if not isinstance(obj, Configuration):
+        raise JunctureError(f"{path}: holds surface networks, not components: 'juncture "
+                            f"{command}' needs a wave-drag deck or a juncture JSON/TOML model "
+                            f"(use 'juncture info' or 'juncture convert' on networks)")
+    return obj
+
+
+def output_dir(path):
+    """Create the output directory (and its parents); a clear error when it cannot be."""
+    out = Path(path)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise JunctureError(f"{out}: exists and is not a directory (expected an output "
+                            f"directory)") from None
+    except OSError as exc:
+        raise JunctureError(f"{out}: cannot create the output directory "
+                            f"({exc.strerror or exc})") from None
+    return out
+
+
+def info(args, progress):
+    import warnings
+
+    from ..io import read
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        obj = read(args.file, format=args.format)
+    print("\n".join(describe(obj)))
+    notes = list(dict.fromkeys(" ".join(str(w.message).split()) for w in caught))
+    if notes:
+        print(f"{len(notes)} warning(s):", *(f"  {n}" for n in notes), sep="\n")
+    return 0
+
+
+def convert(args, progress):
+    from ..io import read, write
+
+    obj = read(args.input, format=args.input_format)
+    write(obj, args.output, format=args.output_format)
+    _say(args, f"wrote {args.output}")
+    return 0
+
+
+def _complete_options(args, fillet):
+    """CompleteOptions from complete's flags; a refused value names its flag."""
+    from ..options import CompleteOptions, check_combination
+
+    fields = {field: getattr(args, dest) for dest, (field, _) in COMPLETE_FLAGS.items()
+              if getattr(args, dest) is not None}
+    flag_of = {field: flag for field, flag in COMPLETE_FLAGS.values()}
+    flag_of.update(keep_area="--keep-area", fillet="--fillet")
+    try:
+        opts = CompleteOptions(**fields)
+        check_combination(fillet, args.keep_area, opts, given=fields)
+    except OptionError as exc:
+        flag = flag_of.get(exc.option, exc.option)
+        if exc.option == "keep_area":
+            fail("argument --keep-area: needs --fillet cubic or circular (without "
+                 "a fillet there is no added area to compensate)")
+        if exc.expected.startswith("no value"):
+            kind = exc.expected.split("'")[1] if "'" in exc.expected else "cubic or circular"
+            fail(f"argument {flag}: only with --fillet {kind} (given: --fillet "
+                 f"{args.fillet})")
+        fail(f"argument {flag}: expected {exc.expected}, found {exc.value!r}")
+    return opts
+
+
+def _check_formats(formats):
+    from ..io import writer_extensions
+
+    known = writer_extensions()
+    for ext in formats:
+        if ext.lstrip(".").lower() not in known:
+            fail(f"argument --format: unknown extension {ext!r}; known: "
+                 f"{', '.join(known)}")
+    return [ext.lstrip(".").lower() for ext in formats]
+
+
+def _summary_json(geo, cfg, fillet, keep_area):
+    st = {k: [float(v) for v in arr] for k, arr in geo.stations.items()}
+    return json.dumps({
+        "title": cfg.title, "fillet": fillet or "none", "keep_area": keep_area,
+        "networks": {k: list(v.shape) for k, v in geo.networks.items()},
+        "intersections": {k: v.tolist() for k, v in geo.intersections.items()},
+        "stations": st, "log": list(geo.log)}, indent=1)
+
+
+def write_outputs(cfg, geo, out, formats, fillet, keep_area):
+    """The networks in every format asked, and summary.json; returns the names written."""
+    from ..errors import MissingDependencyError
+    from ..io import atomic_output, write
+
+    written = []
+    for fmt in formats:
+        name = f"geometry.{fmt}"
+        try:
+            write(geo, out / name)
+        except MissingDependencyError as exc:
+            print(f"juncture: skipped {name}: {exc}", file=sys.stderr)
+            continue
+        written.append(name)
+    with atomic_output(out / "summary.json") as fh:
+        fh.write(_summary_json(geo, cfg, fillet, keep_area))
+    written.append("summary.json")
+    return written
+
+
+def wavedrag_cases(cfg, geo, fillet, keep_area, progress):
+    """Wave drag of the original airplane and of each filleted form of it, by label."""
+    from ..analysis import wavedrag as wave_drag
+    from ..completion import complete as complete_
+
+    progress.step("wave drag, original")
+    cases = {"original": wave_drag(cfg, geometry=complete_(cfg, None, False))}
+    if fillet is not None:
+        progress.step(f"wave drag, {fillet} fillet")
+        cases[f"{fillet} fillet"] = wave_drag(cfg, geometry=geo if not keep_area else
+                                              complete_(cfg, fillet, False))
+        if keep_area:
+            progress.step(f"wave drag, {fillet} fillet, fixed area")
+            cases[f"{fillet} fillet, fixed area"] = wave_drag(cfg, geometry=geo)
+    return cases
+
+
+def write_report(cfg, geo, out, *, command, units, cases, mass=None):
+    """report.html with the wave drag of each case and the mass properties."""
+    from ..massprops import configuration_mass_properties
+    from ..plots import write_report as render
+
+    if mass is None:
+        mass = configuration_mass_properties(geo.configuration or cfg)
+    render(out / "report.html", cfg, geo, wavedrag=cases, massprops=mass, command=command,
+           units=units)
+    return "report.html"
+
+
+def complete(args, progress):
+    from ..completion import complete as complete_
+
+    fillet = None if args.fillet == "none" else args.fillet
+    opts = _complete_options(args, fillet)
+    formats = _check_formats(args.format)
+    report_steps = 2 + (fillet is not None) + (fillet is not None and args.keep_area)
+    steps = 3 + args.figures + (report_steps if args.report else 0)
+    with progress(steps, "complete") as bar:
+        bar.step("read")
+        cfg = read_configuration(args.deck, "complete")
+        out = output_dir(args.output)
+        bar.step("complete")
+        geo = complete_(cfg, fillet, args.keep_area, options=opts)
+        bar.step("write " + " ".join(formats))
+        written = write_outputs(cfg, geo, out, formats, fillet, args.keep_area)
+        if args.figures:
+            from ..plots import write_figures
+
+            bar.step("figures")
+            written += write_figures(cfg, geo, out, fillet=fillet, units=args.units)
+        if args.report:
+            cases = wavedrag_cases(cfg, geo, fillet, args.keep_area, bar)
+            bar.step("mass properties and report")
+            written.append(write_report(cfg, geo, out, command="juncture " + " ".join(
+                sys.argv[1:]), units=args.units, cases=cases))
+    _say(args, *completion_summary(cfg, geo, fillet),
+         f"wrote {len(written)} files to {out}/: {', '.join(written)}")
+    return 0
+
+
+def _wavedrag_cases(cfg, fillet, keep_area):
+    """Label -> a function giving the completed geometry (or None) of each case."""
+    from ..completion import complete as complete_
+
+    # With a fillet, compare completed surfaces: a root section given on the fuselage leaves a
+    # gap in the deck (TM-4406 fig 3) that the completed wing fills, fillet or not.
+    cases = {"original": (lambda: None) if fillet is None else
+             (lambda: complete_(cfg, None, False))}
+    if fillet is not None:
+        cases[f"{fillet} fillet"] = lambda: complete_(cfg, fillet, False)
+        if keep_area:
+            cases[f"{fillet} fillet, fixed area"] = lambda: complete_(cfg, fillet, True)
+    return cases
+
+
+def wavedrag(args, progress):
+    from ..analysis import wavedrag as wave_drag
+
+    fillet = None if args.fillet == "none" else args.fillet
+    if args.keep_area and fillet is None:
+        fail("argument --keep-area: needs --fillet cubic or circular (without "
+             "a fillet there is no added area to compensate)")
+    cfg = read_configuration(args.deck, "wavedrag")
+    out = None if args.output is None else output_dir(args.output)
+    results = {}
+    cases = _wavedrag_cases(cfg, fillet, args.keep_area)
+    with progress(len(cases), "wave drag") as bar:
+        for label, geometry in cases.items():
+            bar.step(label)
+            results[label] = wave_drag(cfg, args.mach, n_x=args.n_x, n_theta=args.n_theta,
+                                       geometry=geometry())
+    if not args.json:
+        _say(args, cfg.title)
+    return _print_wavedrag(args, results, out, cfg.title)
+
+
+def _print_wavedrag(args, results, out, title):
+    from ..io import atomic_output
+
+    first = results["original"]
+    last = list(results.values())[-1]
+    if out is not None:
+        from ..plots import plot_area_distribution
+
+        plot_area_distribution(results, out / "areas.png", title=title,
+                               units=args.units)
+        with atomic_output(out / "wavedrag.json") as fh:
+            json.dump(results, fh, indent=1)
+    if args.json:
+        keys = ("mach", "D_over_q", "CD", "method")
+        doc = {k: last[k] for k in keys}
+        if len(results) > 1:
+            doc["cases"] = {label: {k: r[k] for k in keys} for label, r in results.items()}
+        print(json.dumps(doc, indent=1))
+        return 0
+    print(f"method: {first['method']}" + ("" if first["mach"] is None else
+                                          f", Mach {first['mach']:g}"))
+    print(f"{'case':<34}{'D/q':>14}{'CD':>12}{'change':>10}")
+    for label, r in results.items():
+        cd = "" if r["CD"] is None else f"{r['CD']:.6f}"
+        change = (r["D_over_q"] - first["D_over_q"]) / first["D_over_q"]
+        print(f"{label:<34}{r['D_over_q']:>14.6g}{cd:>12}{100 * change:>9.3f}%")
+    if first["reference_area"] is None:
+        print("(no reference area in the input: CD not available)")
+    if out is not None:
+        _say(args, f"wrote {out / 'areas.png'} and {out / 'wavedrag.json'}")
+    return 0
+
+
+def massprops(args, progress):
+    from ..massprops.command import run_massprops
+
+    print(run_massprops(args.file, as_json=args.json, density=args.density), end="")
+    return 0
+
+
+def blend(args, progress):
+    from ..blend import run
+
+    with progress(1, "blend") as bar:
+        bar.step("surfaces, seams and figures")
+        result = run(args.spec, args.output)
+    for seam in result["report"]["seams"]:
+        _say(args, f"  {seam['seam']:<12} max gap {seam['max_gap']:.3g}  max normal angle "
+             f"{seam['max_angle_deg']:.3g} deg  ({seam['samples']} samples)")
+    _say(args, *(f"wrote {name}" for name in result["files"]))
+    for fmt, reason in dict(result.get("skipped") or {}).items():
+        print(f"juncture: skipped {fmt}: {reason}", file=sys.stderr)
+    return 0
