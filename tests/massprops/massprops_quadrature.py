@@ -68,15 +68,22 @@ def wing_points(b, cr, ct, tr, tt, sweep, dihedral, mu, breaks=(), n_span=10, n_
 
 def wing_reference(b, cr, ct, tr, tt, sweep, dihedral, mu, root, density, side="right",
                    breaks=(), sqrt_le=True):
-    """(mass, volume, cg, inertia) of a wing segment by quadrature; ``side`` as WingSegment."""
+    """(mass, volume, cg, inertia) of a wing segment by quadrature; ``side`` as WingSegment.
+
+    ``root`` is the panel's own root for "right" and "left" (a left panel is the right one's
+    points mirrored about its root, y -> -y, then moved to the root); "both" is the right
+    panel at ``root`` plus its mirror image in the plane y = 0.
+    """
     pts, dv = wing_points(b, cr, ct, tr, tt, sweep, dihedral, mu, breaks, sqrt_le=sqrt_le)
-    pts = pts + np.asarray(root, dtype=float)
+    root = np.asarray(root, dtype=float)
     mirror = np.array([1.0, -1.0, 1.0])
     if side == "left":
-        pts = pts * mirror
+        pts = pts * mirror + root
     elif side == "both":
-        pts = np.concatenate([pts, pts * mirror])
+        pts = np.concatenate([pts + root, (pts + root) * mirror])
         dv = np.concatenate([dv, dv])
+    else:
+        pts = pts + root
     m, cg, inertia = moments(pts, density * dv)
     return m, np.sign(density) * dv.sum(), cg, inertia
 

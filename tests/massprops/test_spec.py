@@ -227,7 +227,12 @@ def test_load_spec_errors(tmp_path):
 
 def test_documented_example_evaluates():
     doc = Path(__file__).resolve().parents[2] / "docs" / "massprops-spec.md"
-    example = json.loads(re.search(r"```json\n(.*?)```", doc.read_text(), re.S).group(1))
+    blocks = [json.loads(b) for b in re.findall(r"```json\n(.*?)```", doc.read_text(), re.S)]
+    specs = [b for b in blocks if "components" in b]
+    for fragment in (b for b in blocks if "components" not in b):    # a single component
+        evaluate_spec({"components": [fragment]})
+    assert len(specs) == 1
+    example = specs[0]
     total, parts = evaluate_spec(example)
     assert [n for n, _ in parts][:2] == ["skin outside", "skin inside"]
     skin = parts[0][1] + parts[1][1]

@@ -133,8 +133,9 @@ def test_diamond_v_integrals_match_adaptive_quadrature(x_m):
 @pytest.mark.parametrize("taper", [0.25, 0.5, 1.0])
 def test_table2_wing(taper):
     """Table 2 of the paper (figures 3-6 plot its results; no values are printed):
-    right wing, root [2, 3, -1] ft, c_r = 1 ft, NACA 0008 -> 0010, b = 4 ft, m = 3 slugs,
-    sweep 10 deg, no dihedral."""
+    right wing, c_r = 1 ft, NACA 0008 -> 0010, b = 4 ft, m = 3 slugs, sweep 10 deg, no
+    dihedral, here with its root at [2, 3, -1] in project axes (the paper's root location is
+    in its own axes, x forward and z down: test_wing_paper places it as the paper does)."""
     args = (4.0, 1.0, taper, 0.08, 0.10, math.radians(10.0), 0.0)
     seg = WingSegment(*args, root_quarter_chord=(2.0, 3.0, -1.0))
     props = seg.mass_properties(mass=3.0)
@@ -159,17 +160,28 @@ def test_rectangular_diamond_wing_by_hand():
     assert props.inertia[2, 2] == pytest.approx(0.2 * (1.0 / 24 + 4.0 / 12), rel=1e-13)
 
 
-def test_left_is_mirror_of_right_and_both_is_their_sum():
-    kw = dict(sweep=0.3, dihedral=0.15, root_quarter_chord=(0.4, 0.7, -0.2))
-    right = WingSegment(3.0, 1.2, 0.5, 0.12, 0.09, side="right", **kw).mass_properties(
-        density=3.0)
-    left = WingSegment(3.0, 1.2, 0.5, 0.12, 0.09, side="left", **kw).mass_properties(
-        density=3.0)
-    both = WingSegment(3.0, 1.2, 0.5, 0.12, 0.09, side="both", **kw).mass_properties(
-        density=3.0)
+def test_left_keeps_its_root_and_both_is_the_symmetric_pair():
+    """The root location is in the aircraft frame for every side (eq 24 and section 2.1): a
+    left panel is the right one mirrored about the xz plane through its own root, so a left
+    panel with root (x, -y, z) is the right panel with root (x, y, z) mirrored in y = 0, and
+    "both" is that pair. (Until issue 11 "left" mirrored the root too: the old version of this
+    test asserted left(root) == right(root).mirrored("xz").)"""
+    args = (3.0, 1.2, 0.5, 0.12, 0.09)
+    kw = dict(sweep=0.3, dihedral=0.15)
+    root, image = (0.4, 0.7, -0.2), (0.4, -0.7, -0.2)
+    right = WingSegment(*args, side="right", root_quarter_chord=root, **kw)
+    left = WingSegment(*args, side="left", root_quarter_chord=image, **kw)
+    both = WingSegment(*args, side="both", root_quarter_chord=root, **kw)
+    right, left, both = (w.mass_properties(density=3.0) for w in (right, left, both))
     assert left.allclose(right.mirrored("xz"), rtol=1e-13)
     assert both.allclose(right + left, rtol=1e-13)
-    assert left.cg[2] > kw["root_quarter_chord"][2]      # dihedral raises the left tip too
+    assert both.cg[1] == 0.0
+    # the same left panel about its own root: y_cg - y_root is minus the right panel's
+    here = WingSegment(*args, side="left", root_quarter_chord=root, **kw).mass_properties(
+        density=3.0)
+    assert here.cg[1] - root[1] == pytest.approx(-(right.cg[1] - root[1]), rel=1e-14)
+    np.testing.assert_allclose(here.inertia, left.inertia, rtol=1e-14, atol=1e-16)
+    assert left.cg[2] > root[2]      # dihedral raises the left tip too
 
 
 def test_mass_instead_of_density():

@@ -9,7 +9,14 @@ from .properties import MassProperties
 from .rotor import Rotor, rotor_disk_integrals
 from .solids import Cuboid, Cylinder, PointMass, Sphere
 from .spec import evaluate_spec, format_table, load_spec, spec_report_json, validate_spec
-from .thickness import NACA4_PRESETS, CustomThickness, Diamond, Naca4, ThicknessDistribution
+from .thickness import (
+    NACA4_PRESETS,
+    ConstantThickness,
+    CustomThickness,
+    Diamond,
+    Naca4,
+    ThicknessDistribution,
+)
 from .wing import WingSegment, WingSegmentsResult, wing_segments_mass_properties
 
 __all__ = [
@@ -17,6 +24,7 @@ __all__ = [
     "ThicknessDistribution",
     "Naca4",
     "Diamond",
+    "ConstantThickness",
     "CustomThickness",
     "NACA4_PRESETS",
     "WingSegment",

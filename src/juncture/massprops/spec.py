@@ -6,9 +6,11 @@ The format is documented field by field in ``docs/massprops-spec.md``. In short:
      "components": [{"type": "wing" | "rotor" | "cuboid" | "cylinder" | "sphere" | "point",
                      "name": "...", ...fields of the type..., "density": rho | "mass": m}]}
 
-Project axes (x aft, y right, z up); angles in DEGREES. Every missing, unknown or ill-typed
-field is reported at once in one :class:`~juncture.errors.SpecError`, each problem naming the
-component (1-based index and name) and the field and saying what was expected.
+Project axes (x aft, y right, z up); angles in DEGREES. A wing's ``root`` is where its root
+quarter-chord is, whatever its ``side`` (a left wing's root is not mirrored; ``"both"`` is the
+pair given by its right root). Every missing, unknown or ill-typed field is reported at once
+in one :class:`~juncture.errors.SpecError`, each problem naming the component (1-based index
+and name) and the field and saying what was expected.
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ from ..errors import GeometryError, SpecError
 from .properties import MassProperties
 from .rotor import Rotor
 from .solids import Cuboid, Cylinder, PointMass, Sphere
-from .thickness import NACA4_PRESETS, Diamond, Naca4
+from .thickness import NACA4_PRESETS, ConstantThickness, Diamond, Naca4
 from .wing import WingSegment
 
 __all__ = ["load_spec", "validate_spec", "evaluate_spec", "spec_report_json", "format_table",
@@ -66,7 +68,8 @@ _EXPECT = {
     "side": 'one of "right", "left", "both"',
     "matrix3": "3 orthonormal rows of 3 numbers [[...], [...], [...]]",
     "airfoil": ('{"naca4": [a0, a1, a2, a3, a4]}, {"naca4": "<preset>"} with a preset in '
-                + ", ".join(sorted(NACA4_PRESETS)) + ', or {"diamond": x_m} with 0 <= x_m <= 1'),
+                + ", ".join(sorted(NACA4_PRESETS)) + ', {"diamond": x_m} with 0 <= x_m <= 1, '
+                'or {"constant": 1} (mu = 1, a rectangular section: a tank)'),
 }
 
 
@@ -84,6 +87,8 @@ def _check_airfoil(v):
     (key, val), = v.items()
     if key == "naca4":
         return _nums(val, 5) or (isinstance(val, str) and val in NACA4_PRESETS)
+    if key == "constant":           # mu = 1 (paper section 5, fuel tanks); no other value
+        return _is_num(val) and val == 1
     return key == "diamond" and _is_num(val) and 0 <= val <= 1
 
 
@@ -210,6 +215,8 @@ def _airfoil(value):
     (key, val), = value.items()
     if key == "diamond":
         return Diamond(float(val))
+    if key == "constant":
+        return ConstantThickness()
     return Naca4.preset(val) if isinstance(val, str) else Naca4(*map(float, val))
 
 

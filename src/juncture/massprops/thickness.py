@@ -28,8 +28,8 @@ import numpy as np
 
 from ..errors import GeometryError
 
-__all__ = ["ThicknessDistribution", "Naca4", "Diamond", "CustomThickness", "NACA4_PRESETS",
-           "thickness_v_integrals"]
+__all__ = ["ThicknessDistribution", "Naca4", "Diamond", "ConstantThickness", "CustomThickness",
+           "NACA4_PRESETS", "thickness_v_integrals"]
 
 #: Table 1 of Moulton & Hunsaker: NACA 4-digit-form coefficients (a0..a4) of eq 2.
 NACA4_PRESETS = {
@@ -151,6 +151,29 @@ class Diamond(ThicknessDistribution):
         return np.array([0.5, (4 * xm + 1) / 6.0, (8 * xm * xm + 3) / 14.0, 0.25])
 
 
+@dataclass(frozen=True, slots=True)
+class ConstantThickness(ThicknessDistribution):
+    """Constant thickness ``mu = 1``: a rectangular section, e.g. a fuel tank (section 5).
+
+    Moulton & Hunsaker section 5 models fuel tanks as "wing segments with constant thickness
+    distribution (i.e., mu(x_a/c) = 1)": every section is a rectangle of chord c and
+    thickness tau c. Its v-integrals are exactly 1: integral 1 dx = 1, 4 integral (x - 1/4) dx
+    = 4 (1/2 - 1/4) = 1, (48/7) integral (x - 1/4)^2 dx = (48/7)(7/48) = 1, integral 1 dx = 1.
+
+    Examples
+    --------
+    >>> ConstantThickness().v.tolist()
+    [1.0, 1.0, 1.0, 1.0]
+    """
+
+    def mu(self, x_hat):
+        return np.ones_like(np.asarray(x_hat, dtype=float))
+
+    @property
+    def v(self):
+        return np.ones(4)
+
+
 def thickness_v_integrals(func, breakpoints=()):
     """The v-integrals of an arbitrary ``mu(x_hat)`` by adaptive quadrature.
 
@@ -209,8 +232,9 @@ def thickness_v_integrals(func, breakpoints=()):
 class CustomThickness(ThicknessDistribution):
     """Any thickness distribution ``mu(x_hat)``, v-integrals by :func:`thickness_v_integrals`.
 
-    ``func`` is called with scalar floats in [0, 1]. A constant ``lambda x: 1.0`` models a fuel
-    tank of constant thickness (Moulton & Hunsaker section 5).
+    ``func`` is called with scalar floats in [0, 1]. For a fuel tank of constant thickness
+    (``mu = 1``, Moulton & Hunsaker section 5) use :class:`ConstantThickness`, exact and
+    without quadrature.
 
     Examples
     --------

@@ -10,10 +10,27 @@ tip of a right wing and z down, origin at the root quarter-chord. juncture's pro
 x aft, y right, z up. The single conversion is :func:`paper_to_project` (x -> -x, z -> -z, a
 180 degree rotation about y), applied once to the paper's results, never inside a formula.
 
-Sides. ``"right"`` is the segment as described, root at ``root_quarter_chord`` and span
-towards +y. ``"left"`` is its mirror image in the project xz plane (y -> -y), root included:
-in the paper's frame this is its delta = -1 (eq 24), and the dihedral of a left segment also
-raises its tip. ``"both"`` is right + left. Give the root of the right-hand panel in all cases.
+Sides and the root location. The paper's wing frame has its origin at the root quarter-chord,
+and a segment is placed in the aircraft by giving that point in the aircraft frame (section 2.1;
+Table 2's "wing root location"). ``root_quarter_chord`` is that point, in project axes, and the
+root stays exactly there for every side:
+
+==========  ===============================================================================
+side        panel
+==========  ===============================================================================
+"right"     root at ``root_quarter_chord``, span towards +y (delta = 1, eq 24)
+"left"      root at ``root_quarter_chord``, span towards -y: the right panel mirrored in the
+            xz plane *through its own root* (delta = -1, eqs 24, 26, 33, 40, 54). A left
+            wing with its root at y = -0.5 has its CG at y = -0.5 - y_bar (eq 33).
+"both"      the symmetric pair, as a designer gives a wing by its right half: the right
+            panel at ``root_quarter_chord`` = (x, y, z) and its mirror image in the aircraft's
+            plane of symmetry y = 0, a left panel with its root at (x, -y, z)
+==========  ===============================================================================
+
+Dihedral raises the tip of a left panel too (a rotation by delta Gamma about the root's x
+axis). This is what the authors' code does (MMoIpy, ``wing.py`` and ``component.py``: a
+segment's CG and tensor are rotated and then shifted by the root location, never mirrored;
+a "both" wing mirrors its spanwise root offset ``y_offset`` for the left half).
 """
 
 from __future__ import annotations
@@ -33,6 +50,7 @@ __all__ = ["WingSegment", "WingSegmentsResult", "wing_segments_mass_properties",
 Side = Literal["right", "left", "both"]
 _SIDES = ("right", "left", "both")
 _PAPER_TO_PROJECT = np.diag([-1.0, 1.0, -1.0])
+_MIRROR_Y = np.array([1.0, -1.0, 1.0])
 
 
 def paper_to_project(cg, inertia):
@@ -169,7 +187,9 @@ def wing_segments_mass_properties(semispan, chord_root, chord_tip, thickness_roo
     airfoil : ThicknessDistribution or (4,) or (N, 4) float, optional
         Thickness distribution or its v-integrals (v0..v3). Default: NACA 4-digit.
     root_quarter_chord : (3,) or (N, 3) float, optional
-        Root quarter-chord point of the right-hand panel, project axes [length]; default 0.
+        Root quarter-chord point of the panel, project axes [length]; default 0. For ``"left"``
+        the left panel's own root; for ``"both"`` the right panel's root (the left one's is its
+        mirror image (x, -y, z)). See the module docstring.
     density, mass : (N,) float or scalar
         Exactly one: density [mass / length^3] or mass of the segment (both sides together
         for ``"both"``) [mass]. Negative values model removed material.
@@ -223,7 +243,7 @@ def wing_segments_mass_properties(semispan, chord_root, chord_tip, thickness_roo
     if np.any(both):
         k = np.flatnonzero(both)
         left = _place(rho[k], vol[k], sx[k], sy[k], ixx[k], iyy[k], izz[k], pxy[k], dih[k],
-                      -np.ones(k.size), root[k])
+                      -np.ones(k.size), root[k] * _MIRROR_Y)      # the pair's left root
         m2, v2_, c2, i2 = combine_arrays(np.stack([out[0][k], left[0]], axis=1),
                                          np.stack([out[1][k], left[1]], axis=1),
                                          np.stack([out[2][k], left[2]], axis=1),
@@ -235,7 +255,8 @@ def wing_segments_mass_properties(semispan, chord_root, chord_tip, thickness_roo
 def _place(rho, vol, sx, sy, ixx, iyy, izz, pxy, dihedral, delta, root):
     """Scale by density, shift to the CG, convert to project axes, apply side, dihedral, root.
 
-    All (N,) except root (N, 3). Returns [mass, volume, cg, inertia] as arrays.
+    All (N,) except root (N, 3), the panel's own root quarter-chord in project axes, which is
+    added as it is (not mirrored for delta = -1). Returns [mass, volume, cg, inertia].
     """
     n = vol.size
     m = rho * vol
@@ -265,7 +286,7 @@ def _place(rho, vol, sx, sy, ixx, iyy, izz, pxy, dihedral, delta, root):
     inertia[:, 1, 2] = inertia[:, 2, 1] = c * s * (iyy_ - izz_)
     cg_out = np.empty((n, 3))
     cg_out[:, 0] = cg[:, 0] + root[:, 0]
-    cg_out[:, 1] = c * cg[:, 1] + delta * root[:, 1]
+    cg_out[:, 1] = c * cg[:, 1] + root[:, 1]
     cg_out[:, 2] = s * cg[:, 1] + root[:, 2]
     return [m, np.sign(rho) * vol, cg_out, inertia]
 
@@ -280,8 +301,9 @@ class WingSegment:
     ``semispan * tan(sweep)``, with ``chord_tip`` and ``thickness_tip``. Chord and thickness
     ratio vary linearly between them; every section has the thickness distribution
     ``airfoil`` (no camber, no twist). Dihedral then rotates the panel about the x axis through
-    the root quarter-chord, tip up. ``side`` chooses the panel (``"right"``), its mirror image
-    in the xz plane (``"left"``), or both.
+    the root quarter-chord, tip up. ``side`` chooses the span direction: ``"right"`` towards
+    +y, ``"left"`` towards -y from the same root (Moulton & Hunsaker eq 24, delta = -1), or
+    ``"both"``, the symmetric pair whose right panel has this root.
 
     Parameters
     ----------
@@ -299,7 +321,9 @@ class WingSegment:
     airfoil : ThicknessDistribution, optional
         Default :class:`Naca4` (traditional NACA 4-digit coefficients).
     root_quarter_chord : (3,) float
-        Root quarter-chord point of the right-hand panel, project axes [length].
+        Root quarter-chord point of the panel in project axes [length]: where the panel's root
+        is, for ``"left"`` too; for ``"both"`` the right panel's root, the left panel's being
+        (x, -y, z).
     name : str, optional
 
     Examples
@@ -310,6 +334,14 @@ class WingSegment:
     >>> w = WingSegment(2.0, 1.0, 1.0, 0.1, 0.1, airfoil=Diamond(0.5))
     >>> round(w.mass_properties(density=1.0).volume, 12)
     0.1
+
+    A left panel keeps its root where it is given: rectangular, so its CG is half the span
+    further out, at y = -0.5 - 1.
+
+    >>> left = WingSegment(2.0, 1.0, 1.0, 0.1, 0.1, side="left", airfoil=Diamond(0.5),
+    ...                    root_quarter_chord=(0.0, -0.5, 0.0))
+    >>> round(float(left.mass_properties(density=1.0).cg[1]), 12)
+    -1.5
     """
 
     semispan: float
