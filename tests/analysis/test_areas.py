@@ -23,11 +23,12 @@ from juncture.analysis.areas import (
     winglike_normal_area,
 )
 from juncture.analysis.closed import closed_networks
-from juncture.analysis.command import plot_area_distribution, wavedrag
+from juncture.analysis.command import wavedrag
 from juncture.analysis.wavedrag import sears_haack_drag
 from juncture.errors import GeometryError, JunctureError
 from juncture.geometry import Geometry
 from juncture.model import ArbitraryBody, CircularBody, Configuration, WingLike
+from juncture.plots import plot_area_distribution
 from support import EXAMPLE_DECK, PDAS_DECK
 
 

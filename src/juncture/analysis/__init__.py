@@ -2,7 +2,7 @@
 
 from .areas import mach_plane_area_distribution, normal_area_distribution
 from .closed import closed_networks
-from .command import plot_area_distribution, wavedrag
+from .command import wavedrag
 from .cuts import mach_plane_areas, mach_plane_extents, normal_areas, plane_cut_areas
 from .wavedrag import (
     FarFieldResult,
@@ -20,7 +20,6 @@ __all__ = [
     "mach_plane_area_distribution",
     "closed_networks",
     "wavedrag",
-    "plot_area_distribution",
     "plane_cut_areas",
     "normal_areas",
     "mach_plane_areas",

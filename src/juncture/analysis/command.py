@@ -1,12 +1,10 @@
-"""The ``juncture wavedrag`` job as library functions: area distributions, wave drag, a plot.
+"""The ``juncture wavedrag`` job as library functions: area distributions and wave drag.
 
 :func:`wavedrag` returns plain JSON-ready values (floats and lists) so the CLI only prints
-them; :func:`plot_area_distribution` draws several results' ``A(x)`` on one figure.
+them. The figure of several results is :func:`juncture.plots.plot_area_distribution`.
 """
 
 from __future__ import annotations
-
-from pathlib import Path
 
 import numpy as np
 
@@ -14,7 +12,7 @@ from ..errors import JunctureError
 from .areas import default_stations, mach_plane_area_distribution, normal_area_distribution
 from .wavedrag import eminton_lord, far_field_drag
 
-__all__ = ["wavedrag", "plot_area_distribution", "fillet_areas"]
+__all__ = ["wavedrag", "fillet_areas"]
 
 
 def _floats(a):
@@ -155,66 +153,3 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None):
                    cut_areas=np.asarray(cuts["area"]).tolist())
     out["CD"] = None if ref is None else out["D_over_q"] / ref
     return out
-
-
-def plot_area_distribution(results, path, title=None):
-    """Plot the normal-area curves ``A(x)`` of several :func:`wavedrag` results; save it.
-
-    Parameters
-    ----------
-    results : mapping of str to dict
-        Label (e.g. ``"before"``, ``"after fillet"``, ``"after compensation"``) -> a
-        :func:`wavedrag` result (uses ``"x"``, ``"area"`` and, in the legend, ``"D_over_q"``).
-    path : str or path-like
-        Output image; the format follows the extension (``.png``, ``.svg``, ``.pdf``).
-        Written atomically (:func:`juncture.plots.save`).
-    title : str, optional
-
-    Returns
-    -------
-    pathlib.Path
-        The file written.
-
-    Raises
-    ------
-    JunctureError
-        No results, or a result without ``x`` and ``area`` of equal length.
-    """
-    from ..plots import plt, save
-
-    if not results:
-        raise JunctureError("no area distributions to plot")
-    many = len(results) > 1
-    fig, axes = plt.subplots(2 if many else 1, 1, figsize=(9, 7 if many else 5),
-                             layout="constrained", sharex=True, squeeze=False,
-                             height_ratios=(2, 1) if many else None)
-    ax = axes[0, 0]
-    base = None
-    for label, res in results.items():
-        try:
-            x, a = np.asarray(res["x"], float), np.asarray(res["area"], float)
-        except (KeyError, TypeError, ValueError):
-            raise JunctureError(f"result {label!r} has no 'x' and 'area' lists") from None
-        if x.ndim != 1 or x.shape != a.shape:
-            raise JunctureError(f"result {label!r}: 'x' and 'area' must be 1-D of equal "
-                                f"length, found shapes {x.shape} and {a.shape}")
-        dq = res.get("D_over_q")
-        ax.plot(x, a, lw=1.4, label=f"{label} (D/q = {dq:.4g})" if dq is not None else label)
-        if many:
-            if base is None:
-                base = (x, a, label)
-            else:  # differences are what a designer looks for: they are tiny on A(x)
-                axes[1, 0].plot(x, a - np.interp(x, base[0], base[1]), lw=1.2,
-                                color=ax.lines[-1].get_color(), label=f"{label} - {base[2]}")
-    ax.set_ylabel("normal cross-sectional area A(x), both halves")
-    ax.grid(True, lw=0.3, alpha=0.5)
-    ax.legend(fontsize=8, loc="best")
-    ax.set_title(title or "area distribution")
-    if many:
-        axes[1, 0].axhline(0.0, color="0.5", lw=0.6)
-        axes[1, 0].set_ylabel("area difference")
-        axes[1, 0].grid(True, lw=0.3, alpha=0.5)
-        axes[1, 0].legend(fontsize=8, loc="best")
-    axes[-1, 0].set_xlabel("x (aft)")
-    save(fig, path)
-    return Path(path)

@@ -181,7 +181,7 @@ def run(spec_path, out_dir):
             continue
         files.append(str(target))
     if model.spec["output"]["figures"]:
-        from .plots import write_figures
+        from ..plots.blend import write_figures
 
         files.extend(write_figures(model, out))
     return {"report": report, "refinement": refinement, "files": files, "skipped": skipped}

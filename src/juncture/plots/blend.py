@@ -1,7 +1,8 @@
 """Figures of the long-strake blend in the manner of Song, Ma & Wang (2008) figs 1-10.
 
 Matplotlib with the Agg back end, one PNG per figure; 3-D views are wireframes (matplotlib
-does not depth-sort between surfaces, see dependencies.md).
+does not depth-sort between surfaces, see dependencies.md). Axes carry the length unit
+``units`` (default ``"ft"``), a label only: the spec's lengths are never converted.
 """
 
 from __future__ import annotations
@@ -9,6 +10,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
+from ._backend import pyplot
+from .style import DEFAULT_UNITS, axis_label
 
 __all__ = ["write_figures", "FIGURES"]
 
@@ -26,11 +30,11 @@ FIGURES = {
 }
 
 
-def _axes3d(fig, pos=111):
+def _axes3d(fig, units, pos=111):
     ax = fig.add_subplot(pos, projection="3d")
-    ax.set_xlabel("x")
-    ax.set_ylabel("y")
-    ax.set_zlabel("z")
+    ax.set_xlabel(axis_label("x", units))
+    ax.set_ylabel(axis_label("y", units))
+    ax.set_zlabel(axis_label("z", units))
     return ax
 
 
@@ -70,12 +74,24 @@ def _line3(ax, pts, **kw):
     ax.plot(pts[:, 0], pts[:, 1], pts[:, 2], **kw)
 
 
-def write_figures(model, out_dir):
-    """Write the figures of :data:`FIGURES` into ``out_dir``; returns the paths written."""
-    import matplotlib
+def write_figures(model, out_dir, units=DEFAULT_UNITS):
+    """Write the figures of :data:`FIGURES` into ``out_dir``; return the paths written.
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    Parameters
+    ----------
+    model : BlendModel
+        The built blend (:func:`juncture.blend.build_blend`).
+    out_dir : str or path-like
+        An existing directory.
+    units : str
+        Length unit written on the axes (default ``"ft"``; a label only, nothing is
+        converted).
+
+    Returns
+    -------
+    list of str
+    """
+    plt = pyplot()
 
     out = Path(out_dir)
     lines, wb, r2, w = model.lines, model.wing_body, model.strake, model.patch
@@ -93,7 +109,7 @@ def write_figures(model, out_dir):
 
     # fig 1: lines
     fig = plt.figure(figsize=(8, 6))
-    ax = _axes3d(fig)
+    ax = _axes3d(fig, units)
     ctx = _context(ax, model, x_range)
     _line3(ax, wing.points(*lines.rho3(s)[0].T), color="b", label="AB (wing)")
     uv = lines.rho1(s)[0]
@@ -120,7 +136,7 @@ def write_figures(model, out_dir):
             uv = f(np.array([sk]))[0][0]
             ax.plot(uv[0], np.degrees(uv[1]), "ko", ms=3)
             ax.annotate(k + suf, (uv[0], np.degrees(uv[1])))
-    ax.set_xlabel("u = x")
+    ax.set_xlabel(axis_label("u = x", units))
     ax.set_ylabel("v (body section parameter) [deg]")
     ax.legend()
     ax.set_title("Body blending line MGH in the body parameter plane")
@@ -134,7 +150,7 @@ def write_figures(model, out_dir):
              ("fig07_r1.png", "Wing-body blend R1", [(wb.r1, "r", "R1")])]
     for name, title, surfs in specs:
         fig = plt.figure(figsize=(8, 6))
-        ax = _axes3d(fig)
+        ax = _axes3d(fig, units)
         grids = _context(ax, model, x_range)
         for surf, col, lab in surfs:
             grids.append(_wire(ax, surf, col, label=lab))
@@ -145,7 +161,7 @@ def write_figures(model, out_dir):
 
     # fig 8: plane T and R2
     fig = plt.figure(figsize=(8, 6))
-    ax = _axes3d(fig)
+    ax = _axes3d(fig, units)
     grids = _context(ax, model, x_range)
     size = 2.2 * body.size
     grids.append(_wire(ax, r2, "r", label="R2"))
@@ -174,8 +190,8 @@ def write_figures(model, out_dir):
         ax.plot(yb, zb, "0.5", lw=0.8)
         ax.set_aspect("equal")
         ax.set_title(title, fontsize=9)
-        ax.set_xlabel("y")
-        ax.set_ylabel("z")
+        ax.set_xlabel(axis_label("y", units))
+        ax.set_ylabel(axis_label("z", units))
     g = wing.grid(np.linspace(-1, 1, 81), np.array([lines.v_ab]))[:, 0]
     axs[0].plot(g[:, 1], g[:, 2], "k.", ms=2)
     fig.tight_layout()
@@ -183,7 +199,7 @@ def write_figures(model, out_dir):
 
     # fig 10: all patches
     fig = plt.figure(figsize=(9, 6))
-    ax = _axes3d(fig)
+    ax = _axes3d(fig, units)
     grids = _context(ax, model, x_range)
     grids.append(_wire(ax, wb.r1, "r", label="R1"))
     grids.append(_wire(ax, r2, "b", label="R2"))

@@ -1,4 +1,5 @@
-"""The self-contained HTML report: sections, embedded data, no external resources, a browser."""
+"""The self-contained HTML report: sections, embedded data, units, component colours, no
+external resources, a browser."""
 
 import base64
 import json
@@ -13,7 +14,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import juncture as jc
-from juncture.report import render_report, wireframe_data, write_report
+from juncture.plots import render_report, wireframe_data, write_report
+from juncture.plots.style import component_colour
 from tests.support import EXAMPLE_DECK
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -206,8 +208,9 @@ def test_wireframe_json_round_trips(run):
 def test_station_table_matches_geometry(run):
     st_ = run["geo"].stations
     rows = run["page"].tables["stations"]
-    assert rows[0] == ["x", "original area", "fillet area", "body area", "original radius",
-                       "new radius", "residual"]
+    assert rows[0] == ["x [ft]", "original area [ft²]", "fillet area [ft²]",
+                       "body area [ft²]", "original radius [ft]", "new radius [ft]",
+                       "residual"]
     assert len(rows) - 1 == len(st_["x"])
     k = 5
     got = _cells(rows[1 + k])
@@ -354,3 +357,78 @@ def test_browser_draws_the_report(run, tmp_path):
     assert drawn.mean() > 0.02
     colours = np.unique((region[drawn] * 255).round().astype(int), axis=0)
     assert len(colours) >= 20
+
+
+def test_mass_properties_state_their_unit(run):
+    page, text = run["page"], run["text"]
+    head = page.tables["massprops"][0]
+    assert head[:3] == ["component", "mass [ft\u00b3 at density 1]", "volume [ft\u00b3]"]
+    assert head[3:6] == ["CG x [ft]", "CG y [ft]", "CG z [ft]"]
+    assert head[6] == "Ixx [ft\u2075 at density 1]"
+    assert "no density was given, so it is 1 and each mass is its volume in ft\u00b3" in text
+    # The key number: the total mass with its unit and what it means.
+    total = run["mp"][0].mass
+    assert f"{total:.5g} ft\u00b3" in text and "total mass (density 1: mass = volume)" in text
+
+
+def test_mass_unit_with_a_density(small):
+    from juncture.massprops import configuration_mass_properties
+
+    cfg = _read_example()
+    mp = configuration_mass_properties(cfg, density=2.5)
+    page = Page(render_report(None, small, massprops=mp, figures={}, units="m"))
+    head = page.tables["massprops"][0]
+    assert head[1] == "mass [density x m\u00b3]" and head[6] == "Ixx [mass x m\u00b2]"
+    assert "total mass [density x m\u00b3]" in render_report(None, small, massprops=mp,
+                                                             figures={}, units="m")
+
+
+def test_units_label_every_table(run):
+    text = render_report(run["cfg"], run["geo"], wavedrag=run["wd"], figures={}, units="in")
+    page = Page(text)
+    assert page.tables["stations"][0][0] == "x [in]"
+    assert page.tables["intersections"][0][2:] == ["x range [in]",
+                                                   "max distance from body [in]"]
+    assert page.tables["wavedrag"][0][3] == "D/q [in\u00b2]"
+    assert page.tables["inputs"][0][4:] == ["x extent [in]", "y extent [in]", "z extent [in]"]
+    assert "[ft" not in "".join(c for t in page.tables.values() for c in t[0])
+
+
+def test_viewer_colours_are_the_figures_colours(run):
+    data = json.loads(run["page"].scripts["jr-data"][1])
+    comps = {c["name"]: c["colour"] for c in data["components"]}
+    assert set(comps) == {c.name for c in run["cfg"]}
+    for name, colour in comps.items():
+        assert colour == component_colour(name)
+    # Networks named "wing upper", "body lower" belong to the components of those names.
+    owner = {n["name"]: data["components"][n["component"]]["name"] for n in data["networks"]}
+    assert owner["wing upper image"] == "wing" and owner["fin 3 inboard"] == "fin 3"
+
+
+def test_viewer_knows_components_named_otherwise():
+    from tests.plots.plot_cases import example, renamed
+
+    cfg = renamed(example())
+    geo = jc.complete(cfg, None, wing="main wing", body="fuselage")
+    data = json.loads(Page(render_report(cfg, geo, figures={})).scripts["jr-data"][1])
+    names = [c["name"] for c in data["components"]]
+    assert "main wing" in names and "fuselage" in names and "wing" not in names
+    assert dict(zip(names, (c["colour"] for c in data["components"])))["fuselage"] == \
+        component_colour("body")
+
+
+def test_the_old_import_paths_still_work_and_warn():
+    import importlib
+    import sys
+
+    from juncture.plots import juncture as plots_juncture
+
+    for name in ("juncture.report", "juncture.plots_juncture"):
+        sys.modules.pop(name, None)
+        with pytest.warns(DeprecationWarning, match="moved to juncture.plots"):
+            importlib.import_module(name)
+    import juncture.plots_juncture
+    import juncture.report
+
+    assert juncture.report.write_report is write_report
+    assert juncture.plots_juncture.plot_fillet_sections is plots_juncture.plot_fillet_sections

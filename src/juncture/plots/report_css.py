@@ -1,4 +1,4 @@
-"""Inline style sheet of the HTML report (:mod:`juncture.report`): no fonts or files fetched."""
+"""Inline style sheet of the HTML report (:mod:`juncture.plots.report`): nothing fetched."""
 
 from __future__ import annotations
 

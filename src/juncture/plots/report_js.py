@@ -1,8 +1,9 @@
-"""Inline script of the HTML report (:mod:`juncture.report`): a small wireframe viewer.
+"""Inline script of the HTML report (:mod:`juncture.plots.report`): a small wireframe viewer.
 
-The viewer reads the JSON of ``<script type="application/json" id="jr-data">`` (written by
-:func:`juncture.report.wireframe_data`) and draws every polyline on ``<canvas id="jr-canvas">``
-in orthographic projection. Axes are the project's (x aft, y starboard, z up). Drag rotates
+The viewer reads the JSON of ``<script type="application/json" id="jr-data">`` (written
+by :func:`juncture.plots.report.wireframe_data`) and draws every polyline on ``<canvas
+id="jr-canvas">`` in orthographic projection, intersections in the data's
+``intersection_colour``. Axes are the project's (x aft, y starboard, z up). Drag rotates
 (yaw about z, pitch about the screen's horizontal axis), shift-drag pans, the wheel zooms,
 the buttons select a view (fitted to the canvas) or reset. It draws once as soon as it
 runs, and again on every change or resize.
@@ -84,7 +85,7 @@ REPORT_JS = r"""
     });
     ctx.globalAlpha = 1;
     ctx.lineWidth = 1.8;
-    ctx.strokeStyle = "#d62728";
+    ctx.strokeStyle = data.intersection_colour || "#d62728";
     data.intersections.forEach(function (inter) {
       ctx.beginPath();
       inter.lines.forEach(path);
