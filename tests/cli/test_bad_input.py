@@ -143,6 +143,7 @@ BAD_OPTIONS = [
     (["complete", "--blocks", "5"], "--blocks"),
     (["complete", "--fillet", "round"], "--fillet"),
     (["complete", "--format", "foo"], "--format"),
+    (["complete", "--format", "wgs", "inp"], "--format"),
     (["complete", "--fillet", "cubic", "--single-network", "--remedy", "parabolas"],
      "--remedy"),
     (["wavedrag", "--mach", "0.5"], "--mach"),

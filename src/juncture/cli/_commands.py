@@ -101,13 +101,12 @@ def _complete_options(args, fillet):
 
 
 def _check_formats(formats):
-    from ..io import writer_extensions
-
-    known = writer_extensions()
+    known = network_extensions()
     for ext in formats:
         if ext.lstrip(".").lower() not in known:
-            fail(f"argument --format: unknown extension {ext!r}; known: "
-                 f"{', '.join(known)}")
+            fail(f"argument --format: {ext!r} is not a format of surface networks; complete "
+                 f"writes {', '.join(known)} (a deck or JSON model of the input: 'juncture "
+                 f"convert')")
     return [ext.lstrip(".").lower() for ext in formats]
 
 
@@ -120,8 +119,20 @@ def _summary_json(geo, cfg, fillet, keep_area):
         "stations": st, "log": list(geo.log)}, indent=1)
 
 
+# Formats that hold components, not surface networks: not outputs of complete.
+_COMPONENT_FORMATS = ("wavedrag", "juncture")
+
+
+def network_extensions():
+    """Extensions of the formats that hold surface networks (what complete writes)."""
+    from ..io import output_format, writer_extensions
+
+    return [e for e in writer_extensions() if output_format(f"x.{e}") not in _COMPONENT_FORMATS]
+
+
 def write_outputs(cfg, geo, out, formats, fillet, keep_area):
-    """The networks in every format asked, and summary.json; returns the names written."""
+    """The networks in every format asked (geometry.<ext>) and summary.json; returns the names
+    written."""
     from ..errors import MissingDependencyError
     from ..io import atomic_output, write
 

@@ -154,7 +154,8 @@ def _complete_parser(sub, common, extensions):
 
 def build_parser(version):
     """The ``juncture`` parser, its commands and their options."""
-    from ..io import reader_formats, writer_extensions, writer_formats
+    from ..io import reader_formats, writer_formats
+    from ._commands import network_extensions
 
     common = _common()
     p = OneLineParser(prog="juncture", parents=[common], description=(
@@ -174,7 +175,7 @@ def build_parser(version):
     s.add_argument("--to", dest="output_format", choices=writer_formats(),
                    help="output format (default: by extension)")
 
-    _complete_parser(sub, common, writer_extensions())
+    _complete_parser(sub, common, network_extensions())
 
     s = sub.add_parser("wavedrag", parents=[common],
                        help="area distributions and supersonic wave drag")

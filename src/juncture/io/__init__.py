@@ -7,6 +7,7 @@ every format module.
 from ._registry import (
     atomic_output,
     formats,
+    output_format,
     read,
     reader_formats,
     to_geometry,
@@ -16,8 +17,7 @@ from ._registry import (
 )
 
 __all__ = ["read", "write", "formats", "reader_formats", "writer_formats", "writer_extensions",
-           "atomic_output",
-           "to_geometry"]
+           "output_format", "atomic_output", "to_geometry"]
 
 # Each import registers its format(s) in its last lines.
 import importlib as _importlib

@@ -18,7 +18,7 @@ from ..errors import DeckError, JunctureError
 
 __all__ = ["register_format", "read", "write", "formats", "atomic_output", "atomic_path",
            "to_geometry", "read_input", "require_configuration", "extensions",
-           "reader_formats", "writer_formats", "writer_extensions"]
+           "reader_formats", "writer_formats", "writer_extensions", "output_format"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,6 +89,12 @@ def _by_extension(path, kind="read"):
 
     hits = [f for f in _FORMATS.values() for e in exts(f) if name.endswith(e)]
     return sorted(hits, key=lambda f: -max(len(e) for e in exts(f) if name.endswith(e)))
+
+
+def output_format(path):
+    """Name of the format a file written to ``path`` would have (by extension), or None."""
+    hits = _by_extension(path, "write")
+    return hits[0].name if hits else None
 
 
 def _get(fmt):
