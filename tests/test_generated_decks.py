@@ -268,10 +268,6 @@ def test_slow_write_then_read_gives_the_same_components(example):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: crashes: ValueError 'array of sample points "
-                   "is empty' (component_networks.trace_curve, a centre fin paired with a wing "
-                   "it does not stand on) and 'cannot convert float NaN to integer' "
-                   "(networks.split_counts, a leading-edge line that misses the fuselage)")
 @settings(max_examples=300, **SLOW)
 @given(decks())
 def test_slow_sharp_completion_finishes_or_refuses_with_a_juncture_error(example):
@@ -302,9 +298,6 @@ def test_slow_intersection_points_lie_on_fuselages_and_pods_off_gaps_steps_and_e
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: 'non-finite coordinate at point 1' when the "
-                   "upper lofting lines of a high wing miss the fuselage (only the lower side "
-                   "handles misses)")
 @settings(max_examples=300, **SLOW)
 @given(decks())
 def test_slow_every_generated_deck_completes_without_a_fillet(example):
@@ -314,9 +307,6 @@ def test_slow_every_generated_deck_completes_without_a_fillet(example):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: arbitrary sections are resampled to 201 "
-                   "points, so intersections lie up to ~5e-5 L off the polylines the deck "
-                   "gives")
 @settings(max_examples=300, **SLOW)
 @given(decks(section="arbitrary"))
 def test_slow_intersection_points_lie_on_the_arbitrary_sections_of_the_deck(example):
@@ -327,9 +317,6 @@ def test_slow_intersection_points_lie_on_the_arbitrary_sections_of_the_deck(exam
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: a gap between fuselage segments is bridged "
-                   "by extending a cubic, not by the straight lines the Harris program draws "
-                   "(points up to ~3e-4 L off)")
 @settings(max_examples=300, **SLOW)
 @given(decks(joints="gap"))
 def test_slow_intersections_in_a_gap_between_segments_lie_on_the_straight_bridge(example):
@@ -351,9 +338,6 @@ def test_slow_no_intersection_is_a_jump_at_a_joint_step(example):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: a lofting line that leaves through an open "
-                   "fuselage base or pod end gets the jump there as an intersection point "
-                   "(e.g. a swept tail past the base: 0.017 L off, residual 1.45 kept)")
 @settings(max_examples=300, **SLOW)
 @given(decks())
 def test_slow_no_intersection_is_a_jump_at_an_open_end(example):
@@ -363,9 +347,6 @@ def test_slow_no_intersection_is_a_jump_at_an_open_end(example):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: fins, tails and wing fins that do not touch "
-                   "are paired (the TM-4607 eq 7 error jumps at a planform edge and the jump is "
-                   "taken for a root; residuals of 28-95 deck units are logged and kept)")
 @settings(max_examples=300, **SLOW)
 @given(decks())
 def test_slow_every_pair_found_has_its_points_on_the_other_surface(example):

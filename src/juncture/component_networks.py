@@ -20,7 +20,7 @@ import warnings
 
 import numpy as np
 
-from .errors import JunctureWarning
+from .errors import GeometryError, JunctureWarning
 from .intersect.body import side_label
 from .intersect.winglike import wing_parameters
 
@@ -45,10 +45,21 @@ def orient_winglike(wing, side, pts):
     return pts if sign * natural_out > 0 else pts[:, ::-1]
 
 
-def _end_line(wing, side, inter, log):
+def _at_root(wing, inter, other=None):
+    """Whether ``inter`` trims ``wing``'s root end (its points nearer the root than the tip).
+
+    A line with no point on this side is placed by the other side's line of the same pair.
+    """
+    u = np.asarray(inter.u, float)
+    if not np.isfinite(u).any() and other is not None:
+        u = np.asarray(other.u, float)
+    u = u[np.isfinite(u)]
+    return bool(u.size == 0 or np.mean(u) < 0.5 * (wing.n_sections - 1))
+
+
+def _end_line(wing, side, inter, at_root, log):
     lines = wing.lofting_lines(side)
     missed = ~inter.found
-    at_root = np.nanmean(inter.u) < 0.5 * (wing.n_sections - 1)
     fallback = lines[:, 0] if at_root else lines[:, -1]
     pts = np.where(missed[:, None], fallback, inter.points)
     u = np.where(missed, 0.0 if at_root else wing.n_sections - 1.0, inter.u)
@@ -57,7 +68,7 @@ def _end_line(wing, side, inter, log):
                f"{'root' if at_root else 'tip'} point is kept")
         log.append(msg)
         warnings.warn(msg, JunctureWarning, stacklevel=3)
-    return at_root, pts, u
+    return pts, u
 
 
 def trimmed_networks(wing, side_inters, log):
@@ -68,19 +79,22 @@ def trimmed_networks(wing, side_inters, log):
     wing : WingLike
         Already interpolated if wanted (the intersections must be of this very object).
     side_inters : dict of str to list of BodyIntersection
-        For "upper" and "lower": the intersections of that surface with other components.
+        For "upper" and "lower": the intersections of that surface with other components,
+        one per touching pair, in the same order on both sides.
 
     Returns
     -------
     dict of str to (n_lines, n_points, 3)
     """
+    ups, los = side_inters.get("upper", []), side_inters.get("lower", [])
     nets = {}
-    for side in ("upper", "lower"):
+    for side, inters, others in (("upper", ups, los), ("lower", los, ups)):
         sec = wing.section_points(side)  # (n_sections, n_stations, 3)
         first, last = None, None
         lo, hi = -np.inf, np.inf
-        for inter in side_inters.get(side, []):
-            at_root, pts, u = _end_line(wing, side, inter, log)
+        for i, inter in enumerate(inters):
+            at_root = _at_root(wing, inter, others[i] if i < len(others) else None)
+            pts, u = _end_line(wing, side, inter, at_root, log)
             if at_root:
                 first, lo = pts, max(lo, float(np.max(u)))
             else:
@@ -151,8 +165,19 @@ def trace_curve(wing, side, line):
     own chord stations: it meets the intersection points exactly only where a station does
     (passing through every one would need extra m-lines across the whole wing, the
     accounting problem TM-4607 describes). Returns (n_stations, 3).
+
+    Raises
+    ------
+    GeometryError
+        If the line has no finite point (a fin or pylon none of whose lofting lines meets
+        ``wing``: such a pair does not touch and is never traced).
     """
+    line = np.asarray(line, float).reshape(-1, 3)
     ok = np.all(np.isfinite(line), axis=1)
+    if not ok.any():
+        raise GeometryError(f"no intersection point to trace on the {side} surface: the fin "
+                            f"or pylon line given has none of its {len(line)} points on "
+                            f"{wing.name} (a pair that does not touch)", wing.name)
     y, f = wing_parameters(wing, line[ok])
     order = np.argsort(f)
     fs = wing.x_over_c / 100.0

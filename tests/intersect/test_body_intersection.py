@@ -1,4 +1,4 @@
-"""Wing / circular-body intersection (TM-4406 eqs 4-6): points on both surfaces."""
+"""Wing / body intersection (TM-4406 eqs 4-6, TM-4607 eq 8): points on both surfaces."""
 
 import numpy as np
 import pytest
@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from juncture.errors import GeometryError
 from juncture.intersect import find_crossings, intersect_body
-from juncture.model import CircularBody, WingLike
+from juncture.model import ArbitraryBody, CircularBody, WingLike
 from tests.support import wing_body
 
 
@@ -113,3 +113,86 @@ def test_find_crossings_solves_a_line_against_a_sphere_exactly():
     res = find_crossings(lines, lambda p: np.linalg.norm(p, axis=-1) - 2.0, -3.0)
     assert res.found[0] and res.points[0] == pytest.approx([0.0, 2.0, 0.0], abs=1e-12)
     assert res.u[0] == pytest.approx(-1.0, abs=1e-12)
+
+
+# ------------------------------------------------------------------ arbitrary sections
+# Issue 11: the surface is the deck's polylines, matched by arc length between stations and
+# blended linearly in x; an intersection is a root of that surface, never a jump.
+DIAMOND = np.array([[0.0, -1.0], [1.0, 0.0], [0.0, 1.0]])
+SQUARE = np.array([[0.0, -1.0], [1.0, -1.0], [1.0, 1.0], [0.0, 1.0]])
+
+
+def flat_wing(x_le, y, z, chord, dihedral_deg=0.0, x_over_c=(0.0, 20.0, 45.0, 70.0, 100.0)):
+    """An unswept wing of zero thickness at height z: lofting lines at constant x."""
+    y = np.asarray(y, float)
+    le = np.stack([np.full(y.size, x_le), y,
+                   z + (y - y[0]) * np.tan(np.radians(dihedral_deg))], -1)
+    zero = np.zeros((y.size, len(x_over_c)))
+    return WingLike("wing", "wing", le, np.full(y.size, chord), x_over_c, zero)
+
+
+def blended_diamond_rectangle(w):
+    """Closed form of the section w of the way from the diamond to the 1.3 x 2 rectangle:
+    both at their matched fractions u = 0, a, 1/2, 1 - a, 1 (a = 1.3 / 4.6, the rectangle's
+    corners; the diamond's one corner is at 1/2). Returns u (5,) and vertices (len(w), 5, 2).
+    """
+    a = 1.3 / 4.6
+    u = np.array([0.0, a, 0.5, 1.0 - a, 1.0])
+    diamond = np.array([[0, -1], [2 * a, -1 + 2 * a], [1, 0], [2 * a, 1 - 2 * a], [0, 1]])
+    rect = np.array([[0, -1], [1.3, -1], [1.3, 0], [1.3, 1], [0, 1]])
+    w = np.asarray(w, float)[:, None, None]
+    return u, (1 - w) * diamond + w * rect
+
+
+@pytest.mark.parametrize("z0, dihedral_deg", [(0.714, 0.0), (0.69, 4.0), (-0.66, -3.0)])
+def test_points_lie_on_the_blended_polylines_of_an_arbitrary_body(z0, dihedral_deg):
+    """Diamond (3 points) at x = 0; rectangle 1.3 x 2 (corners at arc fractions off any
+    equal-s sampling) at x = 10 and 20. The lofting line y -> (y, z0 + g (y - 2)) at x
+    meets the section polyline (closed form above) on one side, at a point solved in closed
+    form; heights near the corners, where a resampled section cuts them."""
+    rect = np.array([[0.0, -1.0], [1.3, -1.0], [1.3, 1.0], [0.0, 1.0]])
+    body = ArbitraryBody("body", [0.0, 10.0, 20.0], [DIAMOND, rect, rect])
+    wing = flat_wing(3.0, [2.0, 3.5, 5.0], z0, 4.0, dihedral_deg,
+                     x_over_c=(0.0, 25.0, 50.0, 75.0, 100.0))
+    res = intersect_body(wing, body, "upper")
+    assert res.found.all()
+    x = wing.lofting_lines("upper")[:, 0, 0]
+    g = np.tan(np.radians(dihedral_deg))
+    u, v = blended_diamond_rectangle(x / 10.0)
+    p, d = v[:, :-1], np.diff(v, axis=1)  # sides (lines, 4, 2)
+    # p_z + t d_z = z0 + g (p_y + t d_y - 2), each side; the one with 0 <= t <= 1
+    t = (z0 + g * (p[..., 0] - 2.0) - p[..., 1]) / (d[..., 1] - g * d[..., 0])
+    side = np.argmax((t >= 0) & (t <= 1), axis=1)
+    rows = np.arange(x.size)
+    tj = t[rows, side]
+    expect = np.concatenate([x[:, None], p[rows, side] + tj[:, None] * d[rows, side]], -1)
+    np.testing.assert_allclose(res.points, expect, rtol=0, atol=1e-12 * body.length)
+    np.testing.assert_allclose(res.theta, u[side] + tj * (u[side + 1] - u[side]), rtol=0,
+                               atol=1e-12)
+    assert res.residual.max() < 1e-12 * body.length
+
+
+def test_a_line_that_meets_an_arbitrary_body_only_through_a_joint_step_misses():
+    """Segment 1 (x 0 to 5) is a square of half-width 1, segment 2 (x 5 to 10, repeated joint
+    station) one of half-width 2. A forward-swept line coming inboard is outside the small
+    square for x < 5 and inside the large one for x > 5: it meets the body only through the
+    step's face at x = 5, which is not part of the parametric surface. The sign change there
+    is a jump of the error, not a root: the line misses (NaN), as documented in
+    :func:`juncture.intersect.intersect_body`."""
+    body = ArbitraryBody("body", [0.0, 5.0, 5.0, 10.0], [SQUARE, SQUARE, 2 * SQUARE,
+                                                          2 * SQUARE], segments=(2, 2))
+    # Root LE at (3, 2.5), tip LE at (0, 4): y = 1.5 + 0.25 f - (x - 5) / 2 on the lines.
+    le = np.array([[3.0, 2.5, 0.0], [0.0, 4.0, 0.0]])
+    wing = WingLike("wing", "wing", le, [0.5, 0.5], [0.0, 50.0, 100.0], np.zeros((2, 3)))
+    res = intersect_body(wing, body, "upper")
+    assert not res.found.any()
+    assert np.isnan(res.points).all()
+    assert sum("misses body" in s for s in res.log) == 3
+    # The same line with the step removed (large square throughout) meets its side at y = 2
+    # for x < 5: a root, found to 1e-12.
+    big = ArbitraryBody("body", [0.0, 10.0], [2 * SQUARE, 2 * SQUARE])
+    res = intersect_body(wing, big, "upper")
+    assert res.found.all()
+    np.testing.assert_allclose(res.points[:, 1], 2.0, rtol=0, atol=1e-12 * big.length)
+    np.testing.assert_allclose(res.points[:, 0], 4.0 + 0.5 * np.array([0.0, 0.5, 1.0]),
+                               rtol=0, atol=1e-12 * big.length)

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 import juncture as jc
-from juncture.intersect import find_intersections, surface_height
-from juncture.model import CircularBody, WingLike
+from juncture.intersect import Pair, find_intersections, intersect_winglike, surface_height
+from juncture.model import CircularBody, Configuration, WingLike
 from tests.support import EXAMPLE_DECK, wing_body
 
 
@@ -165,3 +165,212 @@ def test_a_canard_is_intersected_and_bounds_the_fuselage_split():
     seams = [s for s in geo.log if s.startswith("seam body") and "canard 1" in s]
     assert len(seams) == 2 and all(float(s.rsplit("max gap ", 1)[1]) < 1e-12 for s in seams)
     assert {"canard 1 upper", "canard 1 lower"} <= set(geo.networks)
+
+
+# ------------------------------------------------------------------------------------------
+# An intersection is a root of the surface equation, never a jump (issue 11)
+# ------------------------------------------------------------------------------------------
+XC = np.array([0.0, 8.0, 20.0, 35.0, 50.0, 65.0, 80.0, 92.0, 100.0])  # 9 stations
+HALF = np.array([0.0, 1.9, 2.8, 3.0, 2.8, 2.3, 1.5, 0.7, 0.0])  # % chord, 0 at both edges
+
+
+def straight_line_cylinder(root, tip, centre, radius):
+    """Where the straight line root -> tip (extended) first meets the cylinder
+    (y - yc)^2 + (z - zc)^2 = radius^2 coming from the tip: the parameter s (0 at the root,
+    1 at the tip) of the larger root of the quadratic, or NaN if none."""
+    d = tip - root
+    q = root[1:] - centre
+    a = d[1] ** 2 + d[2] ** 2
+    b = 2.0 * (q[0] * d[1] + q[1] * d[2])
+    c = q[0] ** 2 + q[1] ** 2 - radius ** 2
+    disc = b * b - 4 * a * c
+    return (-b + np.sqrt(disc)) / (2 * a) if disc >= 0 else np.nan
+
+
+OPEN_ENDS = {
+    # A swept tail whose aft lofting lines pass the open base of a cylindrical fuselage.
+    "fuselage base": dict(
+        body=dict(name="body", x=[0.0, 8.0, 30.0], radius=[0.0, 2.0, 2.0], origin=(0, 0, 0)),
+        wing=dict(name="tail 1", kind="tail", le=[[24.0, 0.5, 0.15], [32.0, 6.0, 0.4]],
+                  chord=[6.0, 3.0])),
+    # A stub wing on a pod whose aft end is open (an engine exhaust): its rear lines leave
+    # through the exit.
+    "pod exit": dict(
+        body=dict(name="pod 1", x=[0.0, 3.0, 12.0], radius=[0.0, 1.1, 1.1],
+                  origin=(40.0, 9.0, -1.5)),
+        wing=dict(name="wing", kind="wing", le=[[47.0, 9.3, -1.4], [52.0, 14.0, -1.0]],
+                  chord=[5.5, 2.5])),
+}
+
+
+@pytest.mark.parametrize("case", sorted(OPEN_ENDS))
+def test_no_intersection_point_at_an_open_end(case):
+    """Lines that meet the side of the body there; lines that pass aft of the end at the
+    body's radius and reach its end plane inside it (they enter through the open end) miss:
+    the closed form of a straight line against a cylinder decides which is which."""
+    spec = OPEN_ENDS[case]
+    b = spec["body"]
+    body = CircularBody(b["name"], b["x"], b["radius"], origin=b["origin"], axial="linear",
+                        mirrored=b["origin"][1] != 0)
+    w = spec["wing"]
+    thick = np.tile(HALF, (2, 1)) * np.array([[1.0], [0.8]])
+    wing = WingLike(w["name"], w["kind"], w["le"], w["chord"], XC, thick, thick)
+    cfg = Configuration({body.name: body, wing.name: wing})
+    found = find_intersections(cfg)
+    pair = Pair(wing.name, body.name, "body")
+    assert set(found) == {pair}
+    x_end = body.x_global[-1]
+    centre = np.array(b["origin"][1:], float)
+    r = b["radius"][-1]
+    n_side = n_end = 0
+    for side, inter in zip(("upper", "lower"), found[pair]):
+        lines = wing.lofting_lines(side)
+        for j, line in enumerate(lines):
+            root, tip = line[0], line[-1]
+            s = straight_line_cylinder(root, tip, centre, r)
+            p = root + s * (tip - root)
+            if p[0] <= x_end:  # meets the side of the cylinder
+                n_side += 1
+                assert inter.found[j]
+                np.testing.assert_allclose(inter.points[j], p, rtol=0, atol=1e-9 * body.length)
+            else:  # passes aft of the end at the radius ...
+                # ... and reaches the end plane inside the circle: through the open end.
+                t = (x_end - root[0]) / (tip[0] - root[0])
+                q = root + t * (tip - root)
+                assert np.hypot(*(q[1:] - centre)) < r
+                n_end += 1
+                assert not inter.found[j] and np.isnan(inter.points[j]).all()
+    assert n_side >= 4 and n_end >= 4  # the case holds both kinds of line
+
+
+def fin_behind_the_tail():
+    """A tail with its trailing edge at x = 56 (all along the span) and a twin fin whose root
+    lies aft of it, swept 45 deg: extended downwards, every fin lofting line passes the
+    trailing edge below it."""
+    x = np.array([0.0, 10.0, 60.0])
+    body = CircularBody("body", x, [0.0, 1.0, 1.0], axial="linear")
+    tail = WingLike("tail 1", "tail", [[48.0, 0.5, 0.0], [52.0, 8.0, 0.0]], [8.0, 4.0], XC,
+                    np.tile(HALF, (2, 1)))
+    fin = WingLike("fin 1", "fin", [[56.15, 3.0, 0.1], [61.15, 3.0, 5.1]], [5.0, 3.0], XC,
+                   np.tile(HALF, (2, 1)))
+    return Configuration({c.name: c for c in (body, tail, fin)})
+
+
+def test_a_fin_whose_lines_pass_the_tail_trailing_edge_is_not_paired_with_it():
+    from juncture.intersect.pairs import _box, _overlap
+
+    cfg = fin_behind_the_tail()
+    fin, tail = cfg["fin 1"], cfg["tail 1"]
+    assert _overlap(_box(fin), _box(tail), 0.02)  # a candidate pair for the solver
+    for side in ("upper", "lower"):
+        lines = fin.lofting_lines(side)
+        # Analytic: each line is straight; at the trailing edge (x = 56) it is below z = 0,
+        # the height of the (closed) trailing edge; forward of it, lower still (dz/dx >= 1),
+        # while the symmetric tail's upper surface is never below z = 0.
+        d = lines[:, 1] - lines[:, 0]
+        t = (56.0 - lines[:, 0, 0]) / d[:, 0]
+        z_te = lines[:, 0, 2] + t * d[:, 2]
+        assert np.all(z_te < -0.04) and np.all(d[:, 2] / d[:, 0] >= 1.0)
+        # Eq 7 jumps there (outside the planform the line counts as outside, inside it is
+        # below the upper surface): no root, no point.
+        inter = intersect_winglike(fin, tail, "upper", side)
+        assert not inter.found.any()
+        assert any("edge of the planform" in s for s in inter.log)
+    found = find_intersections(cfg)
+    assert not any(p.a == "fin 1" and p.b == "tail 1" for p in found)
+
+
+def test_an_explicit_pair_that_does_not_touch_is_refused():
+    cfg = fin_behind_the_tail()
+    with pytest.raises(jc.GeometryError, match=r"fin 1.*stated but no lofting line of fin 1 "
+                                               r"meets tail 1"):
+        find_intersections(cfg, explicit=[("fin 1", "tail 1", "upper")])
+
+
+def test_trace_curve_refuses_a_line_without_points():
+    from juncture.component_networks import trace_curve
+
+    cfg = example()
+    with pytest.raises(jc.GeometryError, match=r"wing: no intersection point to trace on "
+                                               r"the lower surface"):
+        trace_curve(cfg["wing"], "lower", np.full((7, 3), np.nan))
+
+
+def ruled_reference(wing):
+    """The deck's own description of ``wing`` (tests.deckgen, SciPy PCHIP), not juncture's."""
+    from tests.deckgen import WingLikeRef
+
+    return WingLikeRef(wing.kind, wing.le, wing.chord, wing.x_over_c, wing.upper, wing.lower,
+                       wing.camber)
+
+
+def reference_points(fin, side, ref, side_b, from_root):
+    """Each straight fin lofting line against ``ref``'s surface, by SciPy's brentq on a
+    sign change found by fine sampling (the first from the searched end)."""
+    from scipy.optimize import brentq
+
+    sign = 1.0 if side_b == "upper" else -1.0
+    out = []
+    for line in fin.lofting_lines(side):
+        a, b = (line[-1], line[0]) if not from_root else (line[0], line[-1])
+
+        def e(t, a=a, b=b):
+            p = a + np.atleast_1d(t)[:, None] * (b - a)
+            f = ref.coordinates(p)[1]
+            return sign * (p[:, 2] - ref.surface(p[:, 1], f, side_b))
+
+        ts = np.linspace(0.0, 4.0, 4001)
+        k = int(np.argmax(e(ts) <= 0))
+        t = brentq(lambda t: e(t)[0], ts[k - 1], ts[k], xtol=1e-14, rtol=1e-15)
+        out.append(a + t * (b - a))
+    return np.array(out)
+
+
+def test_real_fin_on_wing_and_pylon_under_wing_agree_with_an_independent_solve():
+    """The jump rule leaves real pairs as they were: points against SciPy on the deck's
+    surfaces."""
+    cfg = fin_on_wing()
+    found = find_intersections(cfg)
+    pair = Pair("fin 1", "wing", "upper")
+    ref = ruled_reference(cfg["wing"])
+    for side, inter in zip(("upper", "lower"), found[pair]):
+        assert inter.found.all()
+        expect = reference_points(cfg["fin 1"], side, ref, "upper", from_root=False)
+        np.testing.assert_allclose(inter.points, expect, rtol=0, atol=1e-9 * 60.0)
+    cfg = example()
+    found = find_intersections(cfg)
+    ref = ruled_reference(cfg["wing"])
+    for name in ("fin 1", "fin 2"):
+        pair = Pair(name, "wing", "lower")
+        for side, inter in zip(("upper", "lower"), found[pair]):
+            assert inter.found.all()
+            expect = reference_points(cfg[name], side, ref, "lower", from_root=True)
+            np.testing.assert_allclose(inter.points, expect, rtol=0, atol=1e-9 * 300.0)
+
+
+
+def test_a_fin_on_the_fuselage_is_not_paired_with_the_wing_inside_it():
+    """The fin's lofting lines pass through the fuselage top and then meet the wing's upper
+    surface inside the fuselage: roots of eq 7, but each beyond the fuselage
+    crossing on its line, so the fin stands on the fuselage only (TM-4607: the first surface
+    reached from the tip)."""
+    x = np.array([0.0, 10.0, 60.0])
+    body = CircularBody("body", x, [0.0, 2.0, 2.0], axial="linear")
+    wing = WingLike("wing", "wing", [[20.0, 0.5, 0.0], [30.0, 15.0, 0.0]], [20.0, 6.0], XC,
+                    np.tile(HALF, (2, 1)))
+    # Root inside the fuselage (allowed: TM-4406 needs only the tip outside).
+    fin = WingLike("fin 1", "fin", [[25.0, 1.0, 0.8], [29.0, 1.0, 6.0]], [8.0, 4.0], XC,
+                   np.tile(HALF, (2, 1)))
+    cfg = Configuration({c.name: c for c in (body, wing, fin)})
+    from juncture.intersect.pairs import _box, _overlap
+
+    assert _overlap(_box(fin), _box(wing), 0.02)  # a candidate pair for the solver
+    found = find_intersections(cfg)
+    assert set(found) == {Pair("wing", "body", "body"), Pair("fin 1", "body", "body")}
+    # The wing crossings exist (the pair was a candidate with real roots), inside the body.
+    on_body = found[Pair("fin 1", "body", "body")]
+    for side, inter in zip(("upper", "lower"), on_body):
+        below = intersect_winglike(fin, wing, "upper", side)
+        assert below.found.all() and inter.found.all()
+        assert np.all(below.u < inter.u)
+        assert np.all(body.radial_error(below.points) < 0)

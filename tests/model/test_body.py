@@ -145,3 +145,173 @@ def test_bad_slopes_name_the_body():
         CircularBody("b", [0, 1, 2], [1, 1, 1], slopes=np.zeros((2, 2)))
     with pytest.raises(GeometryError, match="slopes"):
         CircularBody("b", [0, 1, 2], [1, 1, 1], slopes=[[0, 0], [np.nan, 0], [0, 0]])
+
+
+# ------------------------------------------------------------------ the surface the deck gives
+# Issue 11: arbitrary sections are the polylines through the deck's points (no resampling),
+# matched between stations by normalised arc length and blended linearly in x; a gap between
+# fuselage segments is bridged by straight lines. References: closed forms, and the
+# independent model of tests/deckgen/references.py.
+DIAMOND = np.array([[0.0, -1.0], [1.0, 0.0], [0.0, 1.0]])  # arc fractions 0, 1/2, 1
+SQUARE = _square_sections(1.0)  # arc fractions 0, 1/4, 3/4, 1
+
+
+def test_arbitrary_section_is_the_polyline_through_its_points():
+    """An irregular convex half-section whose corners fall between any equal-s sampling:
+    a point on the outward bisector of a corner is exactly as far from the section as from
+    the corner (a resampled section cuts the corner and comes nearer)."""
+    sec = np.array([[0.0, -1.3], [0.83, -1.1], [1.37, 0.21], [0.61, 1.09], [0.0, 1.17]])
+    b = ArbitraryBody("body", [0.0, 7.0, 13.0], [sec, sec, sec])
+    rng = np.random.default_rng(4)
+    side = np.diff(sec, axis=0)
+    normal = np.stack([side[:, 1], -side[:, 0]], -1)  # outward: points run counter-clockwise
+    normal /= np.linalg.norm(normal, axis=1)[:, None]
+    for j, corner in enumerate(sec[1:-1]):
+        bisector = normal[j] + normal[j + 1]
+        d = rng.uniform(0.05, 0.6)
+        out = corner + d * bisector / np.linalg.norm(bisector)
+        got = b.signed_distance([[3.1, out[0], out[1]], [3.1, -out[0], out[1]]])
+        np.testing.assert_allclose(got, [d, d], rtol=1e-14)
+        assert b.signed_distance([4.2, *corner]) == pytest.approx(0.0, abs=1e-15)
+    # Mid-side points are on the surface; points just inside are negative.
+    mids = 0.5 * (sec[1:] + sec[:-1])
+    pts = np.concatenate([np.full((4, 1), 9.0), mids], axis=1)
+    np.testing.assert_allclose(b.signed_distance(pts), 0.0, atol=1e-15)
+    assert (b.signed_distance(pts * [1, 0.99, 0.99]) < 0).all()
+    # s runs along the polyline by arc length: the corners' fractions map to the corners.
+    seg = np.hypot(*np.diff(sec, axis=0).T)
+    s = np.concatenate([[0.0], np.cumsum(seg)]) / seg.sum()
+    np.testing.assert_allclose(b.point(5.0, s)[:, 1:], sec, atol=1e-15)
+    np.testing.assert_allclose(b.parameter_of(b.point(5.0, s)), s, atol=1e-15)
+
+
+def test_sections_between_stations_are_matched_by_arc_length_and_blended_linearly():
+    """Diamond (3 points) at x = 0 to square (4 points) at x = 10: at x = 5 the section is
+    the polyline (0,-1), (3/4,-3/4), (1,0), (3/4,3/4), (0,1) (both matched at s = 0, 1/4,
+    1/2, 3/4, 1)."""
+    b = ArbitraryBody("body", [0.0, 10.0], [DIAMOND, SQUARE])
+    mid = np.array([[0, -1], [0.75, -0.75], [1, 0], [0.75, 0.75], [0, 1]])
+    np.testing.assert_allclose(b.point(5.0, [0, 0.25, 0.5, 0.75, 1])[:, 1:], mid, atol=1e-15)
+    # Outward of the corner (3/4, 3/4): nearest is the corner, distance 1.25 sqrt(2).
+    assert b.signed_distance([5.0, 2.0, 2.0]) == pytest.approx(1.25 * np.sqrt(2), rel=1e-15)
+    # The centre is 3 / sqrt(10) inside both sides through (3/4, 3/4).
+    assert b.signed_distance([5.0, 0.0, 0.0]) == pytest.approx(-3 / np.sqrt(10), rel=1e-14)
+    # Whole-section area: diamond 2, square 4, and the mid polygon 4 x 3/4 = 3.
+    np.testing.assert_allclose(b.area_at([0.0, 5.0, 10.0]), [2.0, 3.0, 4.0], rtol=1e-15)
+    # Mean height over s (the centre for orientation) of a section symmetric in z: 0.
+    np.testing.assert_allclose(b.center_at([0.0, 5.0, 10.0]), 0.0, atol=1e-15)
+    # At the stations the section is the deck's polyline itself.
+    np.testing.assert_allclose(b.point(0.0, [0, 0.5, 1])[:, 1:], DIAMOND, atol=1e-15)
+    np.testing.assert_allclose(b.point(10.0, [0, 0.25, 0.75, 1])[:, 1:], SQUARE, atol=1e-15)
+
+
+def random_arbitrary_body(rng, counts=(5, 7, 6, 9, 4), joints=(2, 3)):
+    """Random star-shaped half-sections (different point counts), in segments of stations."""
+    secs = []
+    for m in counts:
+        th = np.sort(rng.uniform(-np.pi / 2, np.pi / 2, m))
+        th[0], th[-1] = -np.pi / 2, np.pi / 2
+        r = rng.uniform(0.8, 1.6, m)
+        secs.append(np.stack([r * np.cos(th), 0.3 + r * np.sin(th)], -1))
+        secs[-1][[0, -1], 0] = 0.0
+    x = np.cumsum(rng.uniform(1.0, 3.0, len(counts)))
+    return x, secs
+
+
+def test_arbitrary_body_distance_agrees_with_the_independent_reference():
+    from tests.deckgen.references import ArbitraryBodyRef
+
+    rng = np.random.default_rng(12)
+    x, secs = random_arbitrary_body(rng)
+    # Two segments with a gap between stations 3 and 4 (x[2] < x[3]).
+    b = ArbitraryBody("body", x, secs, segments=(3, 2))
+    ref = ArbitraryBodyRef([(x[sl], [s[:, 0] for s in secs[sl]], [s[:, 1] for s in secs[sl]])
+                            for sl in (slice(0, 3), slice(3, 5))])
+    xq = rng.uniform(x[0] + 1e-3, x[-1] - 1e-3, 300)
+    pts = np.stack([xq, rng.uniform(-2, 2, xq.size), rng.uniform(-1.5, 2.0, xq.size)], -1)
+    d_ref, _ = ref.distance(pts)
+    np.testing.assert_allclose(np.abs(b.signed_distance(pts)), d_ref, rtol=0, atol=1e-14)
+    # Points of the surface lie on the reference surface, and s is recovered from them.
+    s = rng.uniform(0, 1, xq.size)
+    on = b.point(xq, s)
+    assert ref.distance(on)[0].max() < 1e-14
+    np.testing.assert_allclose(b.parameter_of(on), s, rtol=0, atol=1e-13)
+
+
+def test_arbitrary_body_lipschitz_bounds_hold():
+    rng = np.random.default_rng(2)
+    x, secs = random_arbitrary_body(rng)
+    b = ArbitraryBody("body", x, secs)
+    pa = np.stack([rng.uniform(x[0], x[-1], 400), rng.uniform(-2, 2, 400),
+                   rng.uniform(-1.5, 2, 400)], -1)
+    step = rng.normal(size=(400, 3))
+    step *= rng.uniform(1e-4, 0.5, (400, 1)) / np.linalg.norm(step, axis=1)[:, None]
+    pb = pa + step
+    pb[:, 0] = np.clip(pb[:, 0], x[0], x[-1])
+    rate = np.abs(b.signed_distance(pb) - b.signed_distance(pa)) / np.linalg.norm(pb - pa,
+                                                                                   axis=1)
+    local = b.error_lipschitz_between(pa, pb)
+    assert (rate <= local).all() and (local <= b.error_lipschitz).all()
+    # A section that does not move along x: the distance is 1-Lipschitz, exactly.
+    still = ArbitraryBody("body", [0.0, 5.0], [SQUARE, SQUARE])
+    assert still.error_lipschitz == 1.0
+
+
+@pytest.mark.parametrize("axial", ["pchip", "linear"])
+def test_a_gap_between_segments_is_a_straight_frustum(axial):
+    """Segment 1 ends at x = 4 (r 1.5, camber 0.2), segment 2 starts at x = 6 (r 2.5, camber
+    -0.2): between them r and camber are linear in x; no overshoot, no jump at either end."""
+    x = [0.0, 1.0, 2.5, 4.0, 6.0, 7.0, 9.0, 10.0]
+    r = [0.2, 0.9, 1.3, 1.5, 2.5, 2.2, 2.1, 1.0]
+    c = [0.0, 0.1, 0.15, 0.2, -0.2, -0.1, 0.0, 0.1]
+    b = CircularBody("body", x, r, c, origin=(3.0, 0.0, 0.5), segments=(4, 4), axial=axial)
+    xg = np.linspace(7.0, 9.0, 9)  # the gap, global x
+    w = (xg - 7.0) / 2.0
+    r_line, c_line = 1.5 + w * 1.0, 0.5 + 0.2 - 0.4 * w
+    np.testing.assert_allclose(b.radius_at(xg), r_line, rtol=1e-15, atol=1e-15)
+    np.testing.assert_allclose(b.center_at(xg)[:, 1], c_line, rtol=1e-15, atol=1e-15)
+    np.testing.assert_allclose(b.radius_at(xg[:-1], 1), 0.5, rtol=1e-14)  # x = 9: segment 2
+    np.testing.assert_allclose(b.area_at(xg), np.pi * r_line ** 2, rtol=1e-15)
+    th = np.linspace(-np.pi / 2, np.pi / 2, 9)
+    p = b.point(xg, th)
+    np.testing.assert_allclose(p[:, 1:], np.stack([r_line * np.cos(th),
+                                                   c_line + r_line * np.sin(th)], -1),
+                               atol=1e-15)
+    np.testing.assert_allclose(b.radial_error(p), 0.0, atol=1e-15)
+    # Straight lines between corresponding points of the two end circles: the frustum.
+    a_pts, b_pts = b.point(7.0, th), b.point(9.0, th)
+    np.testing.assert_allclose(p, a_pts + w[:, None] * (b_pts - a_pts), atol=1e-14)
+    # The slope bound on a segment in the gap is 1 + |r'| + |c'| = 1 + 0.5 + 0.2.
+    assert b.error_lipschitz_between([7.2, 0, 0], [8.8, 1, 1]) == pytest.approx(1.7, rel=1e-8)
+    # Both segments keep their own interpolants up to their end stations.
+    np.testing.assert_allclose(b.radius_at([3.0, 7.0, 9.0, 13.0]), [0.2, 1.5, 2.5, 1.0],
+                               rtol=1e-15)
+    # Signed distance (meridian polyline sampled at every station): a point 0.3 outside
+    # the frustum, along its normal, is 0.3 away (uncambered copy of the body).
+    flat = CircularBody("body", x, r, segments=(4, 4), axial=axial)
+    n = np.array([-0.5, 1.0]) / np.hypot(0.5, 1.0)  # meridian normal: r' = 0.5
+    q = np.array([5.0, 2.0]) + 0.3 * n
+    assert flat.signed_distance([q[0], q[1], 0.0]) == pytest.approx(0.3, rel=1e-12)
+
+
+def test_segment_pieces_skip_the_bridge():
+    """``value_and_slope(pieces=...)`` counts the segments' own pieces (the numbering the
+    re-designed fuselage uses): segment 2's first station takes segment 2's slope."""
+    x = np.array([0.0, 1.0, 2.0, 4.0, 5.0, 7.0])
+    r = np.array([1.0, 1.0, 1.0, 3.0, 4.0, 4.0])
+    b = CircularBody("body", x, r, segments=(3, 3), axial="linear")
+    v, s = b._interp.value_and_slope(np.array([4.0]), (2, 3))  # segment 2: pieces 2 and 3
+    assert v[0, 0] == 3.0 and s[0, 0] == 1.0
+    v, s = b._interp.value_and_slope(np.array([2.0]), (0, 1))  # segment 1 at its end
+    assert v[0, 0] == 1.0 and s[0, 0] == 0.0
+    assert b.radius_at(3.0) == 2.0 and b.radius_at(3.0, 1) == 1.0  # the bridge
+
+
+def test_arbitrary_body_gap_is_a_straight_blend():
+    """An arbitrary body with a gap: between the last section of one segment and the first of
+    the next, matched points are joined linearly (as between any two stations)."""
+    b = ArbitraryBody("body", [0.0, 2.0, 5.0, 8.0], [SQUARE, SQUARE, 2 * DIAMOND,
+                                                      2 * DIAMOND], segments=(2, 2))
+    mid = np.array([[0, -1.5], [1, -1], [1.5, 0], [1, 1], [0, 1.5]])
+    np.testing.assert_allclose(b.point(3.5, [0, 0.25, 0.5, 0.75, 1])[:, 1:], mid,
+                               atol=1e-15)

@@ -3,6 +3,13 @@
 Every lofting line of one surface (upper or lower) of a wing, canard, tail, fin or pylon is
 extended towards the body's axis and cut with the body surface; see :mod:`.rays` for the
 root finder that replaces the paper's fixed-gain iteration.
+
+The body surface is the one the deck describes (:mod:`juncture.model.body`): circular
+sections with straight frustums across gaps between segments; arbitrary sections as the
+deck's polylines, matched by arc length between stations. TM-4607 eq 8 interpolates a
+section curve y_i(z) at x = v_x and compares it with v_y; here the error is the signed
+in-plane distance to that exact polyline (the same zero set, and a Lipschitz bound for the
+bracketing), so points are on the deck's surface to rounding (about 1e-12 of the length).
 """
 
 from __future__ import annotations
@@ -90,9 +97,7 @@ def _u_axis(wing, body, lines):
         centre = body.origin[1] if isinstance(body, CircularBody) else 0.0
         c = np.full(lines.shape[0], centre)
     else:
-        x_root = lines[:, 0, 0]
-        c = body.center_at(x_root)[:, 1] if isinstance(body, CircularBody) else \
-            np.array([np.mean(body._sections_at(x)[:, 1]) for x in x_root])
+        c = body.center_at(lines[:, 0, 0])[:, 1]
     return (c - s[0]) / (s[1] - s[0])
 
 
@@ -118,6 +123,20 @@ def intersect_body(wing: WingLike, body, side="upper", samples_per_section=None,
     ------
     GeometryError
         If the tip of a lofting line lies inside the body (the wing does not leave it).
+
+    Notes
+    -----
+    An intersection is a root of the body's surface equation, never a jump of it. Where two
+    fuselage segments repeat their joint station with different sections, the surface steps
+    at x = x_joint; the step's face (the region between the two sections in that plane)
+    closes the solid but is not part of the parametric surface (no theta or arc-length
+    parameter, no body network carries it). A lofting line that enters the body only through
+    that face is therefore not given a point on it: the sign change across the step is a jump
+    of the error (the closed bracket keeps a residual of the step's size), the search goes on
+    inboard of it, and the line is reported as missing unless it meets the surface proper
+    further inboard (the same rule as for an open end; :func:`.rays.find_crossings`, Notes).
+    The bracketing's Lipschitz screening holds off such steps: a line that dips into the
+    body only within a step's height of the joint may be seen as missing it.
     """
     return _intersect(wing, body, (side,), samples_per_section,
                       None if hint is None else (hint,))[0]

@@ -2,7 +2,9 @@
 
 Candidates come from bounding boxes (each grown by a small margin); each candidate is then
 confirmed by the solver: a pair touches if at least one lofting line meets the other
-component. Roles:
+component, i.e. reaches a root of the surface equation (a sign change of the error across a
+jump, at a planform edge or an open body end, is no root: :func:`.rays.find_crossings`).
+A pair stated explicitly that does not touch in that sense is refused. Roles:
 
 - ``"body"``: a wing-like surface meets a body (wing, canard, tail or fin on the fuselage;
   pylon on a nacelle), TM-4406 eqs 4-6 or TM-4607 eq 8;
@@ -75,7 +77,17 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
     Returns
     -------
     dict of Pair to tuple of BodyIntersection
-        One intersection per surface of ``a`` (upper/outboard, lower/inboard).
+        One intersection per surface of ``a`` (upper/outboard, lower/inboard). A pair found
+        automatically touches if a lofting line reaches a root of the surface equation on
+        ``b`` (never a jump of the error) before it reaches any other component searched
+        from the same end of ``a`` (a fin on the fuselage is not paired with the wing its
+        extended lines meet inside the fuselage).
+
+    Raises
+    ------
+    GeometryError
+        If an explicit pair names a missing component or role, or does not touch (no
+        lofting line meets ``b``).
     """
     pairs = [p if isinstance(p, Pair) else Pair(*p) for p in explicit]
     for p in pairs:
@@ -87,7 +99,14 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
     stated = {p.a for p in pairs}
     skip = {tuple(s) for s in skip}
     out = {p: intersect_pair(cfg, p) for p in pairs if (p.a, p.b) not in skip}
+    for p, res in out.items():
+        if not any(r.found.any() for r in res):
+            raise GeometryError(f"the pair ({p.a!r}, {p.b!r}, {p.role!r}) was stated but "
+                                f"no lofting line of {p.a} meets {p.b} (as role {p.role!r}); "
+                                "remove the pair or move the components so that they touch",
+                                p.a)
     boxes = {}
+    auto = {}
 
     def box(c):  # built on first use: the networks are not free
         if c.name not in boxes:
@@ -114,6 +133,35 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
                 except GeometryError:
                     continue
                 if any(r.found.any() for r in res):
-                    out[pair] = res
+                    auto[pair] = res
                     break
+    out.update(_first_reached(auto))
     return out
+
+
+def _first_reached(found):
+    """The pairs of which at least one point is the first surface its lofting line reaches.
+
+    A lofting line of a fin is followed from its tip (from its root for a pylon meeting a
+    lower surface, TM-4607): the surface it reaches first is the one the fin stands on. A
+    pair whose every point lies beyond another pair's point on the same line, searched from
+    the same end (a fin on the fuselage whose extended lines also reach the wing inside the
+    fuselage), does not touch: it is dropped.
+    """
+    groups = {}
+    for pair in found:
+        groups.setdefault((pair.a, pair.role == "lower"), []).append(pair)
+    keep = dict(found)
+    for (_, from_root), pairs in groups.items():
+        if len(pairs) < 2:
+            continue
+        wins = np.zeros(len(pairs), bool)
+        for side in range(2):
+            u = np.stack([found[p][side].u for p in pairs])  # (pairs, lines), NaN if missed
+            key = np.where(np.isfinite(u), -u if from_root else u, -np.inf)
+            best = key.max(axis=0)
+            wins |= ((key == best) & np.isfinite(key)).any(axis=1)
+        for pair, won in zip(pairs, wins):
+            if not won:
+                del keep[pair]
+    return keep

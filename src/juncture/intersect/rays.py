@@ -8,6 +8,9 @@ linear between sections, linearly extended beyond the root for u < 0 and beyond 
 u > n - 1), the error is sampled on a grid to bracket the crossing the paper means (the first
 one reached coming inboard from the tip), and the bracket is closed by the Illinois variant of
 regula falsi (superlinear, never leaves the bracket) to a relative tolerance of 1e-13 in u.
+A closed bracket is a root only if the error there is (nearly) zero: a sign change across a
+jump of the error (an open body end, a planform edge) is stepped over, and a line whose
+every sign change is a jump misses (see :func:`find_crossings`, Notes).
 """
 
 from __future__ import annotations
@@ -18,7 +21,8 @@ import numpy as np
 
 from ..errors import ConvergenceError
 
-__all__ = ["polyline_points", "find_crossings", "Crossings", "SurfaceBound"]
+__all__ = ["polyline_points", "find_crossings", "Crossings", "SurfaceBound",
+           "root_tolerance"]
 
 
 class SurfaceBound:
@@ -86,6 +90,10 @@ class Crossings:
         The error at each line's starting end (the tip); NaN where a hint was used.
     gradient : (m, 3) float or None
         The error's gradient at the crossings, when the error function provides one.
+    jumps : (m,) int or None
+        Sign changes of the error along each line that closed off the surface (a jump of the
+        error at an open end, a planform edge, ...) and were therefore not taken as roots.
+        A line with jumps and no root is a miss.
     """
 
     u: np.ndarray
@@ -96,6 +104,7 @@ class Crossings:
     residual: np.ndarray
     start_error: np.ndarray = None
     gradient: np.ndarray = None
+    jumps: np.ndarray = None
 
 
 def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
@@ -136,12 +145,14 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
 
     ``error.value_and_gradient(points) -> (e, grad)`` (with the rows too for a row-aware
     error, as in :func:`find_crossings`). Each iterate is the Newton step from
-    the last point when it falls inside the current bracket, else the regula-falsi point;
-    the bracket shrinks with every evaluation, so the iteration cannot leave it. Stops when
-    the Newton correction is below rtol (quadratic convergence: about 3 iterations).
-    ``start`` (optional, NaN where absent) replaces the first regula-falsi point: a warm start
-    close to the root (a previous solution) saves an iteration or two.
-    Returns (u, f(u), iterations).
+    the last point when it falls inside the current bracket, else the regula-falsi point, or
+    the midpoint when the previous fallback of that line was regula falsi too (at a jump of
+    the error regula falsi alone can crawl: one end barely moves); the bracket shrinks with
+    every evaluation, so the iteration cannot leave it. Stops when the Newton correction is
+    below rtol (quadratic convergence: about 3 iterations). ``start`` (optional, NaN where
+    absent) replaces the first regula-falsi point: a warm start close to the root (a previous
+    solution) saves an iteration or two. ``a, b, fa, fb`` are updated in place to the final
+    bracket (f values as evaluated). Returns (u, f(u), iterations).
     """
     m, n = lines.shape[:2]
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -149,6 +160,7 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
     if start is not None:
         u = np.where(np.isfinite(start) & ((start - a) * (start - b) < 0), start, u)
     fu = np.zeros(m)
+    fell = np.zeros(m, bool)  # the last iterate of the line was a regula-falsi fallback
     it = 0
     rows = np.flatnonzero(act)
     tol = max(rtol, 1e-9)
@@ -181,21 +193,26 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
         # residual anyway).
         done = (np.abs(step) <= tol * scale) | (e == 0) | (np.abs(br - ar) <= rtol * scale)
         need = ~inside & ~done
-        if need.any():  # Newton left the bracket: regula falsi there instead
+        use_rf = np.zeros(rows.size, bool)
+        if need.any():  # Newton left the bracket: regula falsi there, or bisection
             with np.errstate(invalid="ignore", divide="ignore"):
                 rf = br[need] - fbr[need] * (br[need] - ar[need]) / (fbr[need] - far[need])
-            nxt[need] = np.where(np.isfinite(rf), rf, 0.5 * (ar[need] + br[need]))
+            ok_rf = np.isfinite(rf) & ((rf - ar[need]) * (rf - br[need]) < 0) & \
+                ~fell[rows[need]]
+            nxt[need] = np.where(ok_rf, rf, 0.5 * (ar[need] + br[need]))
+            use_rf[need] = ok_rf
+        fell[rows] = use_rf
         u[rows] = np.where(done & ~inside, ur, nxt)
         rows = rows[~done]
     return u, fu, it
 
 
-def _brackets_dense(lines, error, u_low, samples_per_section, rows):
+def _brackets_dense(lines, error, u_low, samples_per_section, rows, u_top=None):
     m, n = lines.shape[:2]
-    u_top = float(n - 1)
+    u_top = np.full(m, float(n - 1)) if u_top is None else u_top
     span = u_top - np.minimum(u_low, 0.0)
     n_samp = int(np.ceil(float(span.max()) * samples_per_section)) + 2
-    grid = u_top - np.linspace(0.0, 1.0, n_samp)[None, :] * (u_top - u_low)[:, None]
+    grid = u_top[:, None] - np.linspace(0.0, 1.0, n_samp)[None, :] * (u_top - u_low)[:, None]
     e = _call(error, polyline_points(lines, grid), rows)
     return _first_entering(grid, e) + (e[:, 0],)
 
@@ -250,18 +267,22 @@ def _refine_dips(lines, error, line_rows, ua, ub, ea, eb, speed, lipschitz, max_
     return found, u_in, e_in
 
 
-def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line_rows):
+def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line_rows,
+                       u_top=None):
     """Brackets from the section points plus dense samples only where a crossing may hide.
 
     The error changes by at most ``lipschitz`` per unit length along a line, so a segment of
     length l whose end errors are both positive with e_a + e_b > lipschitz * l cannot reach
     zero: it is skipped. The others are sampled densely, and any pair of outside samples that
     could still hide an inside point between them is bisected until it is proved outside or an
-    inside point is found (a grazing double crossing is never missed).
+    inside point is found (a grazing double crossing is never missed). ``u_top`` (m,), if
+    given, starts each search there instead of at the tip (knots beyond it collapse onto it).
     """
     m, n = lines.shape[:2]
     knots = np.concatenate([u_low[:, None], np.arange(n, dtype=float)[None, :].repeat(m, 0)],
                            axis=1)[:, ::-1]  # tip first, (m, n + 1)
+    if u_top is not None:
+        knots = np.minimum(knots, u_top[:, None])
     pts = polyline_points(lines, knots)
     e = _call(error, pts, line_rows)
     seg_len = np.linalg.norm(np.diff(pts, axis=1), axis=-1)  # (m, n)
@@ -342,7 +363,7 @@ def _brackets_screened(lines, error, u_low, lipschitz, samples_per_section, line
 
 
 def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, max_iter=200,
-                   lipschitz=None, hint=None, hint_width=0.05):
+                   lipschitz=None, hint=None, hint_width=0.05, atol=None, max_jumps=8):
     """Where each extended lofting line first meets a surface, coming inboard from the tip.
 
     Parameters
@@ -374,18 +395,43 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
         Previous crossings (e.g. of the same wing on a slightly changed body). Where
         [hint - w, hint + w] brackets a crossing with the outboard end outside, it is used
         directly; the caller guarantees nothing changed outboard of it.
+    atol : float, optional
+        Largest |error| at a root [deck length]; default :func:`root_tolerance` of the lines
+        (1e-9 of their bounding-box diagonal). A bracket that closes with a larger residual
+        holds a jump of the error, not a root (see Notes).
+    max_jumps : int
+        How many jumps to step over on one line before calling it a miss.
 
     Returns
     -------
     Crossings
+
+    Notes
+    -----
+    An intersection is a root of the surface equation, never a jump. The error functions
+    are continuous on the surface's extent but jump at its edges: at an open end of a body
+    (from the distance to the axis outside to a negative radial error inside), at a planform
+    edge of a wing (TM-4607 eq 7 is only defined over the planform), at a step between two
+    fuselage segments. A sign change across such a jump brackets no root; regula falsi and
+    Newton still close the bracket onto the jump. So every closed bracket is judged by its
+    residual: a continuous error closed to rtol in u is within about ``K * rtol * |segment|``
+    of zero (K its Lipschitz bound), many orders below ``atol``, whatever the angle between
+    line and surface (a grazing or tangent crossing has a smaller slope and so an even
+    smaller residual), while a jump keeps the size of the jump on both sides. A bracket
+    closing with residual above ``atol`` is a jump: the search resumes inboard of it, and a
+    line whose every sign change is a jump misses (NaN, ``found`` False). Conversely an
+    accepted point is within ``atol`` of the error's zero set, which is the surface: each
+    error bounds the distance to the surface from above.
     """
     lines = np.asarray(lines, float)
-    m = lines.shape[0]
+    m, n = lines.shape[:2]
     if samples_per_section is None:
         samples_per_section = 24 if lipschitz is None else 6
     u_low = np.broadcast_to(np.asarray(u_low, float), (m,)).copy()
-    todo = np.ones(m, bool)
+    atol = root_tolerance(lines) if atol is None else float(atol)
+    newton = hasattr(error, "value_and_gradient")
     found = np.zeros(m, bool)
+    hinted = np.zeros(m, bool)
     a, b, fa, fb = (np.zeros(m) for _ in range(4))
     n_cross = np.zeros(m, int)
     start_err = np.full(m, np.nan)
@@ -395,40 +441,108 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
         hb = np.stack([np.where(ok_h, h + hint_width, 0.0), np.where(ok_h, h - hint_width, 0.0)],
                       axis=1)
         eh = _call(error, polyline_points(lines, hb), np.arange(m))
-        good = ok_h & (eh[:, 0] > 0) & (eh[:, 1] <= 0)
-        found[good], a[good], b[good] = True, hb[good, 0], hb[good, 1]
-        fa[good], fb[good] = eh[good, 0], eh[good, 1]
-        n_cross[good] = 1
-        todo = ~good
-    if todo.any():
-        r = np.flatnonzero(todo)
-        if lipschitz is None:
-            res = _brackets_dense(lines[r], error, u_low[r], samples_per_section, r)
-        else:
-            res = _brackets_screened(lines[r], error, u_low[r], lipschitz,
-                                     samples_per_section, r)
+        hinted = ok_h & (eh[:, 0] > 0) & (eh[:, 1] <= 0)
+        found[hinted], a[hinted], b[hinted] = True, hb[hinted, 0], hb[hinted, 1]
+        fa[hinted], fb[hinted] = eh[hinted, 0], eh[hinted, 1]
+        n_cross[hinted] = 1
+    if not hinted.all():
+        r = np.flatnonzero(~hinted)
+        res = _brackets(lines, error, r, u_low[r], None, lipschitz, samples_per_section)
         found[r], a[r], b[r], fa[r], fb[r], n_cross[r], start_err[r] = res
-    if hasattr(error, "value_and_gradient"):
-        start = None if hint is None else np.where(found, np.asarray(hint, float), np.nan)
-        u, _, it = _newton(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter, start)
-    else:
-        a, b, fa, fb, it = _illinois(lines, error, a, b, fa, fb, found.copy(), rtol, max_iter)
-        # The end with the smaller residual (both are within rtol in u).
-        u = np.where(np.abs(fa) < np.abs(fb), a, b)
-    u = np.where(found, u, np.nan)
+    u = np.full(m, np.nan)
+    residual = np.full(m, np.nan)
+    grad = np.full((m, 3), np.nan) if newton else None
+    jumps = np.zeros(m, int)
+    iterations = 0
+    act = found.copy()
+    start = None if hint is None else np.where(found, np.asarray(hint, float), np.nan)
+    for round_ in range(max_jumps + 1):
+        if act.any():
+            iterations += _close(lines, error, a, b, fa, fb, act, rtol, max_iter, start, atol,
+                                 u, residual, grad)
+        start = None
+        # A bracket that closes off the surface is a jump of the error, not a root.
+        jump = act & ~(residual <= atol)
+        if not jump.any():
+            break
+        jumps += jump
+        found[jump] = False
+        if round_ == max_jumps:
+            break
+        # Search again inboard of each jump, from its inside end (a hint that led to a jump:
+        # the whole line).
+        r = np.flatnonzero(jump)
+        top = np.where(hinted[r], n - 1.0, b[r])
+        res = _brackets(lines, error, r, np.minimum(u_low[r], top), top, lipschitz,
+                        samples_per_section)
+        found[r], a[r], b[r], fa[r], fb[r] = res[:5]
+        n_cross[r] = np.where(hinted[r], res[5], n_cross[r])
+        hinted[r] = False
+        act = np.zeros(m, bool)
+        act[r] = res[0]
+    u[~found] = np.nan
+    residual[~found] = np.nan
+    if grad is not None:
+        grad[~found] = np.nan
     pts = polyline_points(lines, np.where(found, u, 0.0)[:, None])[:, 0]
     pts[~found] = np.nan
-    res_ = np.full(m, np.nan)
-    grad = None
-    if found.any():
-        if hasattr(error, "value_and_gradient"):
-            e_f, g_f = _call_gradient(error, pts[found], np.flatnonzero(found))
-            grad = np.full((m, 3), np.nan)
-            grad[found] = g_f
+    return Crossings(u, pts, found, n_cross, iterations, residual, start_err, grad, jumps)
+
+
+def root_tolerance(*point_sets):
+    """Largest |error| at a root: 1e-9 of the bounding-box diagonal of the points [length].
+
+    ``point_sets``: arrays (..., 3), e.g. the lofting lines and the other component's points.
+    """
+    pts = np.concatenate([np.asarray(p, float).reshape(-1, 3) for p in point_sets])
+    pts = pts[np.isfinite(pts).all(axis=1)]
+    size = float(np.linalg.norm(np.ptp(pts, axis=0))) if len(pts) else 1.0
+    return 1e-9 * (size if size > 0 else 1.0)
+
+
+def _brackets(lines, error, r, u_low, u_top, lipschitz, samples_per_section):
+    """First outside -> inside bracket of lines ``r`` coming inboard from u_top (or the tip)."""
+    if lipschitz is None:
+        return _brackets_dense(lines[r], error, u_low, samples_per_section, r, u_top)
+    return _brackets_screened(lines[r], error, u_low, lipschitz, samples_per_section, r,
+                              u_top)
+
+
+def _close(lines, error, a, b, fa, fb, act, rtol, max_iter, start, atol, u, residual, grad):
+    """Close the brackets of the lines ``act`` and measure the error there, in place.
+
+    Bracketed Newton when the error has a gradient, else Illinois regula falsi. A Newton
+    result whose residual exceeds ``atol`` is closed again by Illinois in its final bracket
+    (a root of a continuous error is then reached to rtol; a jump stays one). Writes u,
+    residual |e(u)| and the gradient (if any) of those lines, and the final brackets into
+    a, b, fa, fb. Returns the iterations used.
+    """
+    rows = np.flatnonzero(act)
+    it = 0
+    polish = rows
+    if grad is not None:
+        un, _, it = _newton(lines, error, a, b, fa, fb, act.copy(), rtol, max_iter, start)
+        p = polyline_points(lines[rows], un[rows, None])[:, 0]
+        e, g = _call_gradient(error, p, rows)
+        u[rows], residual[rows], grad[rows] = un[rows], np.abs(e), g
+        polish = rows[~(np.abs(e) <= atol)]
+    if polish.size:
+        sub = np.zeros(len(a), bool)
+        sub[polish] = True
+        a2, b2, fa2, fb2, it2 = _illinois(lines, error, a, b, fa, fb, sub, rtol, max_iter)
+        a[polish], b[polish], fa[polish], fb[polish] = (
+            v[polish] for v in (a2, b2, fa2, fb2))
+        it += it2
+        # The end with the smaller residual (both are within rtol in u).
+        up = np.where(np.abs(fa[polish]) < np.abs(fb[polish]), a[polish], b[polish])
+        p = polyline_points(lines[polish], up[:, None])[:, 0]
+        if grad is not None:
+            e, g = _call_gradient(error, p, polish)
+            grad[polish] = g
         else:
-            e_f = _call(error, pts[found][:, None], np.flatnonzero(found))[:, 0]
-        res_[found] = np.abs(e_f)
-    return Crossings(u, pts, found, n_cross, it, res_, start_err, grad)
+            e = _call(error, p[:, None], polish)[:, 0]
+        u[polish], residual[polish] = up, np.abs(e)
+    return it
 
 
 def _bound(lipschitz, pa, pb):

@@ -7,6 +7,12 @@ the line above (below) that surface at the same (x, y), e(t) = v_z - z_b(v_x, v_
 points outside ``b``'s planform count as outside. Which end of ``a`` the search starts from
 depends on the role: a fin comes down onto the upper surface from its tip; a pylon comes up
 onto the lower surface from its root (its tip section usually pierces the wing).
+
+Eq 7 is defined over the planform only, so the error jumps at a planform edge: a line that
+passes a leading or trailing edge, the root or the tip, changes sign there without meeting
+the surface. Such a jump is never taken for the intersection (:func:`.rays.find_crossings`
+keeps only brackets that close on the surface, to 1e-9 of the two components' size); a line
+whose only sign change is a jump misses, and its log line says so.
 """
 
 from __future__ import annotations
@@ -15,7 +21,7 @@ import numpy as np
 
 from ..errors import GeometryError
 from .body import BodyIntersection, side_label
-from .rays import find_crossings
+from .rays import find_crossings, root_tolerance
 
 __all__ = ["surface_height", "wing_parameters", "intersect_winglike"]
 
@@ -104,7 +110,8 @@ def intersect_winglike(a, b, side_b="upper", side_a="upper", from_root=None,
         raise GeometryError(f"the {end} of {side_a} lofting line {j + 1} is already "
                             f"{'above' if sign < 0 else 'below'} the {side_b} surface of "
                             f"{b.name}: cannot tell where the two meet", a.name)
-    cr = find_crossings(lines, error, -float(reach), samples_per_section)
+    atol = root_tolerance(lines, b.section_points("upper"), b.section_points("lower"))
+    cr = find_crossings(lines, error, -float(reach), samples_per_section, atol=atol)
     u = cr.u if not from_root else (n - 1) - cr.u
     name = f"{a.name}/{b.name} {side_label(a, side_a)}"
     log = []
@@ -113,8 +120,10 @@ def intersect_winglike(a, b, side_b="upper", side_a="upper", from_root=None,
                    f"{int(cr.n_crossings[j])} times; took the first reached from the "
                    f"{'root' if from_root else 'tip'} (TM-4607 fig 9)")
     for j in np.flatnonzero(~cr.found):
+        edge = (f"; it only passes an edge of the planform ({int(cr.jumps[j])} jump(s) of "
+                "eq 7, not roots)") if cr.jumps[j] else ""
         log.append(f"{name}: lofting line {j + 1} never meets the {side_b} surface of "
-                   f"{b.name} (within {reach:g} section spacings)")
+                   f"{b.name} (within {reach:g} section spacings){edge}")
     log.append(f"{name}: {int(cr.found.sum())} of {len(lines)} lines solved in "
                f"{cr.iterations} iterations, max residual "
                f"{np.nanmax(cr.residual, initial=0.0):.3g}")

@@ -1,9 +1,31 @@
 """Bodies: circular fuselages and pods (TM-4406 eqs 1-3) and arbitrary-section fuselages.
 
 A body is a sequence of cross-sections at increasing x, grouped in *segments* (the deck's
-fuselage segments; adjacent segments may repeat their joint station). Along x, radius and
-camber are interpolated segment by segment (PCHIP by default, linear on request), so a
-discontinuity at a joint is kept rather than smoothed.
+fuselage segments). Between segments the body is the surface the deck describes, the same
+for every method (point, radius, area, distances, the slope bounds of the root finders):
+
+============================  ===========================================================
+joint                          surface
+============================  ===========================================================
+within a segment               circular: radius and camber PCHIP in x (linear on request);
+                               arbitrary: sections matched by arc length, linear in x
+repeated joint station         a step if the two sections differ; at x = x_joint itself
+(segment k ends at x_j,        the later segment's section holds; the step's x = const
+segment k + 1 starts at x_j)   face is not part of the parametric surface
+gap (segment k ends at x_a,    straight lines from the last section of one segment to the
+segment k + 1 starts at        first of the next: circular, radius and camber linear in x
+x_b > x_a, valid per the       (a frustum); arbitrary, matched points joined linearly,
+format)                        as between any two stations
+============================  ===========================================================
+
+The straight bridge is what the Harris program draws: it joins given points by straight lines
+(issue 11), and straight lines between corresponding points of two circles (same angle
+theta) sweep a frustum, whose radius is linear in x and whose area is therefore quadratic in
+x. Linear in area instead would bulge the bridge outward (r = sqrt of a linear function lies
+above the chord) and no longer join the given points by straight lines. docs/formats.md
+section 1.5 and TM-4406/TM-4607 give the circular fuselage only at its stations ("a radius
+distribution r(x) can be synthesized from the input array", TM-4607) and say nothing of
+gaps.
 
 Angle convention (TM-4406 eqs 2-3, architecture.md): y = y_c + r cos(theta),
 z = c(x) + r sin(theta); theta = 0 on the horizontal to starboard, +pi/2 at the top, -pi/2 at
@@ -20,6 +42,8 @@ import numpy as np
 from ..errors import GeometryError
 from ._arrays import check_finite, frozen
 from ._pchip import hermite_coefficients, pchip_coefficients
+from ._range_max import range_max, range_max_table
+from ._sections import matched_pairs
 
 __all__ = ["CircularBody", "ArbitraryBody", "AxialInterpolation"]
 
@@ -66,17 +90,30 @@ def hermite_pieces(x, values, slopes, segments):
 class _Piecewise:
     """Segment-wise interpolant of several columns of data along x, as one piecewise cubic.
 
-    Each segment gets its own PCHIP (or linear) interpolant; their polynomial pieces are
-    merged into a single table of breakpoints and cubic coefficients so that evaluation is one
-    binary search and one Horner pass for all columns at once (the root finders call this in
-    their inner loop). Zero-length intervals at repeated joint stations are dropped; beyond
-    the ends the first / last cubic extrapolates.
+    Each segment gets its own PCHIP (or linear, or Hermite with given slopes) interpolant;
+    their polynomial pieces are merged into a single table of breakpoints and cubic
+    coefficients so that evaluation is one binary search and one Horner pass for all columns
+    at once (the root finders call this in their inner loop). Zero-length intervals at
+    repeated joint stations are dropped (at the joint the later segment holds). A gap between
+    segments (segment k ends at x_a, segment k + 1 starts at x_b > x_a) is bridged by one
+    straight piece from the last station of one to the first of the next, as the Harris
+    program joins given points by straight lines. Beyond the ends the first / last cubic
+    extrapolates.
+
+    ``segment_pieces`` (n_stations - n_segments,) maps the segments' own pieces, numbered
+    without the bridges (segment 1's first, ..., then segment 2's), to rows of the table.
     """
 
     def __init__(self, x, columns, bounds, method, slopes=None):
-        breaks, coefs = [], []
-        for a, b in bounds:
+        breaks, coefs, own, count = [], [], [], 0
+        for i, (a, b) in enumerate(bounds):
             xs, ys = x[a:b], columns[a:b]
+            if i and x[a] > x[a - 1]:  # a gap after the previous segment: a straight bridge
+                slope = (ys[0] - columns[a - 1]) / (x[a] - x[a - 1])
+                breaks.append(x[a - 1:a])
+                coefs.append(np.stack([np.zeros_like(slope), np.zeros_like(slope), slope,
+                                       columns[a - 1]])[:, None, :])
+                count += 1
             if slopes is not None:
                 c = hermite_coefficients(xs, ys, slopes[a:b])
             elif method == "pchip":
@@ -86,18 +123,25 @@ class _Piecewise:
                 c = np.stack([np.zeros_like(slope), np.zeros_like(slope), slope, ys[:-1]])
             breaks.append(xs[:-1])
             coefs.append(c)
+            own.append(np.arange(count, count + xs.size - 1))
+            count += xs.size - 1
         self.breaks = np.concatenate(breaks)
         self.coefs = np.concatenate(coefs, axis=1)  # (4, n_pieces, cols)
         self.ncols = columns.shape[1]
+        self.segment_pieces = np.concatenate(own)
 
     def value_and_slope(self, xq, pieces=None):
         """Values and x-derivatives at xq in one pass (shared coefficient gather).
 
-        ``pieces = (first, last)`` restricts the evaluation to those pieces (one segment's:
-        its end station then takes that segment's one-sided slope).
+        ``pieces = (first, last)`` restricts the evaluation to those pieces, numbered as the
+        segments' own pieces (bridges across gaps not counted; see ``segment_pieces``): one
+        segment's, so that its end station takes that segment's one-sided slope.
         """
         xq = np.asarray(xq, dtype=float)
-        lo, hi = (0, self.breaks.size - 1) if pieces is None else pieces
+        if pieces is None:
+            lo, hi = 0, self.breaks.size - 1
+        else:
+            lo, hi = (int(self.segment_pieces[p]) for p in pieces)
         k = np.minimum(np.maximum(np.searchsorted(self.breaks, xq, side="right") - 1, lo), hi)
         t = (xq - self.breaks[k])[..., None]
         c3, c2, c1, c0 = self.coefs[:, k]
@@ -136,7 +180,9 @@ class CircularBody:
     origin : (3,) float
         Origin of the body's stations; the axis runs through (origin[1], origin[2] + camber).
     segments : tuple of int, optional
-        Number of stations in each segment (default: one segment).
+        Number of stations in each segment (default: one segment). A segment may repeat the
+        previous one's last station (a joint, a step if the radius differs) or start after
+        it (a gap, bridged by a straight frustum: see the module docstring).
     mirrored : bool
         Whether the body has an image at -y (a pod off the centre line). A centre-line body
         is described by its y >= 0 half and is not "mirrored" in this sense.
@@ -148,7 +194,8 @@ class CircularBody:
     slopes : (n, 2) float, optional
         dr/dx and d(camber)/dx at each station. Given, radius and camber are interpolated by
         cubic Hermite pieces with these slopes instead of ``axial`` (a re-designed body keeps
-        its original's shape between stations this way, and depends smoothly on its radii).
+        its original's shape between stations this way, and depends smoothly on its radii);
+        a gap between segments stays a straight bridge.
     """
 
     name: str
@@ -250,12 +297,13 @@ class CircularBody:
         return np.stack([x, c[..., 0] + r * np.cos(theta), c[..., 1] + r * np.sin(theta)], -1)
 
     def _slope_table(self):
-        """(global bound, sparse range-max levels) of |r'| + |c'|, built on first use."""
+        """(global bound, range-max table) of |r'| + |c'| per piece, built on first use."""
         if self._lipschitz is None:
             interp, x = self._interp, self.x
             # |grad e| <= 1 + |r'| + |c'| for e = |p_yz - c(x)| - r(x). On each cubic piece
             # the slope is a quadratic in the local variable: its largest magnitude is at an
             # end or at the vertex, so the per-piece maximum is exact (no sampling margin).
+            # A straight bridge across a gap between segments is a piece like the others.
             c3, c2, c1 = interp.coefs[0], interp.coefs[1], interp.coefs[2]  # (n_pc, cols)
             h = np.append(np.diff(interp.breaks), x[-1] - interp.breaks[-1])[:, None]
             with np.errstate(divide="ignore", invalid="ignore"):
@@ -263,15 +311,8 @@ class CircularBody:
             tv = np.clip(np.nan_to_num(tv), 0.0, h)
             slope = [np.abs(3 * c3 * t * t + 2 * c2 * t + c1) for t in (0.0, h, tv)]
             piece = np.max(slope, axis=0).sum(axis=-1) * (1.0 + 1e-9)  # (n_pieces,)
-            # Sparse table for range maxima: level k holds max(piece[i : i + 2^k]).
-            levels = [piece]
-            while (1 << len(levels)) <= piece.size:
-                prev, w = levels[-1], 1 << (len(levels) - 1)
-                levels.append(np.maximum(prev[:-w], prev[w:]))
-            table = np.zeros((len(levels), piece.size))  # padded: one fancy index per query
-            for lev, row in enumerate(levels):
-                table[lev, :row.size] = row
-            object.__setattr__(self, "_lipschitz", (float(1.0 + piece.max()), table))
+            object.__setattr__(self, "_lipschitz", (float(1.0 + piece.max()),
+                                                    range_max_table(piece)))
         return self._lipschitz
 
     @property
@@ -293,10 +334,7 @@ class CircularBody:
                      brk.size - 1)
         ib = np.clip(np.searchsorted(brk, np.maximum(xa, xb), side="right") - 1, 0,
                      brk.size - 1)
-        table = self._slope_table()[1]
-        k = np.minimum(np.floor(np.log2(ib - ia + 1)).astype(int), table.shape[0] - 1)
-        best = np.maximum(table[k, ia], table[k, ib - (1 << k) + 1])
-        return 1.0 + best
+        return 1.0 + range_max(self._slope_table()[1], ia, ib)
 
     def radial_error(self, points):
         """TM-4406 eq 6: distance from the local section centre minus r(x), vectorised.
@@ -337,8 +375,9 @@ class CircularBody:
 
         Measured in the meridian half-plane through the point (exact for an uncambered body of
         revolution; for a cambered body the camber slope's effect is neglected, an error of
-        second order in that slope). The meridian r(x) is sampled densely, then the nearest
-        sample is polished by Newton steps on (x - px) + (r(x) - rho) r'(x) = 0.
+        second order in that slope). The meridian r(x) is sampled densely and at every
+        station (where r' may jump: a joint, the ends of a straight bridge across a gap), and
+        the distance is that to the polyline through the samples.
         """
         p = np.asarray(points, float)
         shape = p.shape[:-1]
@@ -346,7 +385,7 @@ class CircularBody:
         c = self.center_at(p[:, 0])
         rho = np.hypot(p[:, 1] - c[:, 0], p[:, 2] - c[:, 1])
         x0, x1 = self.x_global[0], self.x_global[-1]
-        xs = np.linspace(x0, x1, samples)
+        xs = np.union1d(np.linspace(x0, x1, samples), self.x_global)
         rs = self.radius_at(xs)
         # Closed meridian outline: axis at the nose, the radius curve, axis at the base.
         mx = np.concatenate([[x0], xs, [x1]])
@@ -394,35 +433,61 @@ class CircularBody:
         return out
 
 
-def _arc_fractions(sec):
-    """Normalised arc length (0 at the first point, 1 at the last) along a polyline (m, 2)."""
-    seg = np.hypot(*np.diff(sec, axis=0).T)
-    s = np.concatenate([[0.0], np.cumsum(seg)])
-    return s / s[-1] if s[-1] > 0 else np.linspace(0.0, 1.0, len(sec))
-
-
 @dataclass(frozen=True, slots=True, eq=False)
 class ArbitraryBody:
     """A fuselage with arbitrary (y, z) half-sections, as the deck's J2 = +1 option.
+
+    Anatomy. At each station the half-section is the polyline through the deck's (y, z)
+    points, ordered from the bottom to the top on the y >= 0 side: the Harris program joins
+    the given points by straight lines, and so does juncture; nothing is resampled. The whole
+    section is the half-section and its mirror image at -y, joined across y = 0 at the top and
+    at the bottom (a half-section that ends on y = 0, as decks do, needs no join).
+
+    Between two consecutive stations (within a segment, or across a gap between segments)
+    the two polylines are matched by normalised arc length, TM-4607's parameter for
+    non-circular sections: the point at fraction s of one section is joined by a straight
+    line to the point at fraction s of the next. The section at x is therefore the linear
+    blend of both, a polyline through the union of their vertex fractions, evaluated exactly
+    (``tests/deckgen/references.py``, ``ArbitraryBodyRef``, builds the same surface
+    independently). Along x the blend is linear, not PCHIP: straight lines between given
+    points, as on every other joint. At a repeated joint station whose two sections differ the
+    surface steps; at x = x_joint the later segment's section holds (see the module
+    docstring).
+
+    The surface parameter ``s`` (:meth:`point`, :meth:`parameter_of`) is the matched
+    fraction: at a station it is the normalised arc length of the deck's polyline, 0 at the
+    bottom, 1 at the top; between stations it is the blend of both sections' arc length (the
+    blended polyline's own arc length fraction differs from it slightly).
 
     Parameters
     ----------
     name : str
     x : (n,) float
-        Stations [deck length]; segments may repeat their joint station.
+        Stations [deck length]; segments may repeat their joint station or leave a gap.
     sections : sequence of (m_k, 2) float
         Half-section at each station: (y, z) points ordered from bottom to top on the
-        y >= 0 side [deck length]. Counts may differ between segments.
+        y >= 0 side [deck length]. Counts may differ between stations.
     segments : tuple of int, optional
         Number of stations per segment.
     resample : int
-        Points per section used for evaluation (equal normalised arc length).
+        Deprecated, and no part of the surface: the number of equally spaced s values at
+        which a caller that samples the sections uniformly (the mass properties) still does;
+        every method here evaluates the given polylines exactly.
+    mirrored : bool
+        As for :class:`CircularBody`.
 
-    Notes
-    -----
-    Between stations, sections are matched by normalised arc length and blended linearly in x
-    (TM-4607 eq 8 interpolates sections by arc length). ``point(x, s)`` takes s in [0, 1],
-    0 at the bottom, 1 at the top.
+    Examples
+    --------
+    A square half-section of side 2 (corners at arc length fractions 0.25 and 0.75), kept
+    from x = 0 to 10: its whole-section area is 2 x 2 and the point at s = 0.5 is the middle
+    of the outer side.
+
+    >>> sq = [[0.0, -1.0], [1.0, -1.0], [1.0, 1.0], [0.0, 1.0]]
+    >>> b = ArbitraryBody("box", [0.0, 10.0], [sq, sq])
+    >>> float(b.area_at(5.0))
+    4.0
+    >>> b.point(5.0, 0.5).tolist()
+    [5.0, 1.0, 0.0]
     """
 
     name: str
@@ -431,8 +496,12 @@ class ArbitraryBody:
     segments: tuple = None
     resample: int = 201
     mirrored: bool = False
+    _u: np.ndarray = None
+    _a: np.ndarray = None
+    _d: np.ndarray = None
+    _count: np.ndarray = None
     _grid: np.ndarray = None
-    _lipschitz: float = None
+    _lipschitz: tuple = None
 
     def __post_init__(self):
         name = self.name
@@ -450,16 +519,22 @@ class ArbitraryBody:
                                     name, k + 1)
             secs.append(a)
         seg, _ = _segment_layout(x, self.segments, name)
-        u = np.linspace(0.0, 1.0, self.resample)
-        grid = np.stack([np.stack([np.interp(u, _arc_fractions(a), a[:, i]) for i in (0, 1)], -1)
-                         for a in secs])
-        grid.flags.writeable = False
-        dx = np.diff(x)
-        move = np.abs(np.diff(grid, axis=0)).max(axis=(1, 2))
-        rate = np.max(np.where(dx > 0, move / np.where(dx > 0, dx, 1.0), 0.0), initial=0.0)
+        u, a, b, count = matched_pairs(secs)
+        # Speed of the matched points along x per station pair: the section moves by at most
+        # this much per unit x (0 across a repeated joint station, where it steps instead).
+        h = np.diff(x)
+        speed = np.where(h > 0, np.linalg.norm(b - a, axis=-1).max(axis=-1)
+                         / np.where(h > 0, h, 1.0), 0.0) * (1.0 + 1e-9)
+        grid = np.concatenate([a, b])  # every vertex of every section (bounding boxes)
+        for arr in (u, a, b, count, grid):
+            arr.flags.writeable = False
+        d = b - a
+        d.flags.writeable = False
         for field, value in (("x", x), ("sections", tuple(secs)), ("segments", seg),
-                             ("_grid", grid), ("mirrored", bool(self.mirrored)),
-                             ("_lipschitz", float(1.25 * (1.0 + np.sqrt(2.0) * rate)))):
+                             ("mirrored", bool(self.mirrored)), ("_u", u), ("_a", a),
+                             ("_d", d), ("_count", count), ("_grid", grid),
+                             ("_lipschitz", (float(1.0 + speed.max()),
+                                             range_max_table(speed)))):
             object.__setattr__(self, field, value)
 
     @property
@@ -472,86 +547,127 @@ class ArbitraryBody:
         """Body length [deck length]."""
         return float(self.x[-1] - self.x[0])
 
-    def _sections_at(self, xq):
-        """(..., resample, 2): resampled half-sections blended linearly at stations xq."""
+    def _pair(self, xq):
+        """Station pair k (sections k, k + 1) and blend fraction w in [0, 1] at stations xq.
+
+        At a repeated joint station the later segment's pair (searchsorted side="right");
+        beyond the ends the end section (w clipped).
+        """
         xq = np.asarray(xq, float)
         x = self.x
-        # Within a repeated joint station take the later segment (searchsorted side="right").
-        k = np.clip(np.searchsorted(x, xq, side="right") - 1, 0, x.size - 2)
-        h = x[k + 1] - x[k]
-        w = np.where(h > 0, (xq - x[k]) / np.where(h > 0, h, 1.0), 1.0)
-        w = np.clip(w, 0.0, 1.0)[..., None, None]
-        return self._grid[k] * (1 - w) + self._grid[k + 1] * w
+        k = np.minimum(np.maximum(np.searchsorted(x, xq, side="right") - 1, 0), x.size - 2)
+        h = x[k + 1] - x[k]  # > 0: side="right" never lands on a repeated joint's pair
+        w = np.clip((xq - x[k]) / np.where(h > 0, h, 1.0), 0.0, 1.0)
+        return k, w
+
+    def _sections_at(self, xq):
+        """(..., M, 2): the half-section polylines at stations xq, exact (padded to M points
+        by repeating the top one: zero-length pieces that change no distance or area)."""
+        k, w = self._pair(xq)
+        return self._a[k] + w[..., None, None] * self._d[k]
 
     def point(self, x, s):
-        """Surface point at station x and normalised arc length s (0 bottom, 1 top). (..., 3)."""
+        """Surface point at station x and surface parameter s (0 bottom, 1 top). (..., 3).
+
+        ``s`` is the matched arc length fraction (see the class docstring); outside [0, 1]
+        the first / last piece of the section extends straight.
+        """
         x, s = np.broadcast_arrays(np.asarray(x, float), np.asarray(s, float))
-        sec = self._sections_at(x)  # (..., m, 2)
-        u = np.linspace(0.0, 1.0, self.resample)
-        j = np.clip(np.searchsorted(u, s, side="right") - 1, 0, u.size - 2)
-        t = ((s - u[j]) / (u[1] - u[0]))[..., None]
-        yz = np.take_along_axis(sec, j[..., None, None], -2)[..., 0, :] * (1 - t) + \
-            np.take_along_axis(sec, (j + 1)[..., None, None], -2)[..., 0, :] * t
-        return np.concatenate([x[..., None], yz], axis=-1)
+        k, w = self._pair(x)
+        u = self._u[k]  # (..., M)
+        j = np.minimum(np.maximum((u <= s[..., None]).sum(-1) - 1, 0), self._count[k] - 2)
+        u0 = np.take_along_axis(u, j[..., None], -1)[..., 0]
+        u1 = np.take_along_axis(u, (j + 1)[..., None], -1)[..., 0]
+        t = ((s - u0) / (u1 - u0))[..., None]
+        w = w[..., None]
+        p0 = self._a[k, j] + w * self._d[k, j]
+        p1 = self._a[k, j + 1] + w * self._d[k, j + 1]
+        return np.concatenate([x[..., None], p0 + t * (p1 - p0)], axis=-1)
 
     def center_at(self, x):
-        """(..., 2): y = 0 and the mean height of the interpolated section (a reference centre
-        for orientation; not a geometric centroid)."""
-        sec = self._sections_at(x)
-        zc = sec[..., 1].mean(axis=-1)
+        """(..., 2): y = 0 and the mean height of the section over its surface parameter,
+        the integral of z(s) ds from 0 to 1 (a reference centre for orientation; not a
+        geometric centroid)."""
+        k, w = self._pair(x)
+        z = self._a[k][..., 1] + w[..., None] * self._d[k][..., 1]
+        zc = 0.5 * (np.diff(self._u[k], axis=-1) * (z[..., 1:] + z[..., :-1])).sum(-1)
         return np.stack([np.zeros_like(zc), zc], axis=-1)
 
     def _project(self, p):
-        """Points (q, 3) onto the segments of their interpolated half-sections.
+        """Points (q, 3) onto the segments of their half-sections.
 
-        Returns the segment starts ``a`` and steps ``d`` (q, m-1, 2), the points in the
-        section plane ``q`` (q, 1, 2) with |y| (the section is symmetric), the clamped segment
-        parameters ``t`` and squared distances ``dist2`` (q, m-1).
+        Returns the pair ``k`` (q,), segment starts ``a`` and steps ``d`` (q, M-1, 2), the
+        points in the section plane ``q`` (q, 1, 2) with |y| (the section is symmetric), the
+        clamped segment parameters ``t`` and squared distances ``dist2`` (q, M-1).
         """
-        sec = self._sections_at(p[:, 0])  # (q, m, 2)
+        k, w = self._pair(p[:, 0])
+        sec = self._a[k] + w[:, None, None] * self._d[k]  # (q, M, 2)
         a, d = sec[:, :-1], np.diff(sec, axis=1)
         q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
         len2 = np.maximum((d * d).sum(-1), 1e-300)
         t = np.clip(((q - a) * d).sum(-1) / len2, 0.0, 1.0)
-        return a, d, q, t, ((q - a - t[..., None] * d) ** 2).sum(-1)
+        return k, a, d, q, t, ((q - a - t[..., None] * d) ** 2).sum(-1)
 
     def parameter_of(self, points):
-        """Normalised arc length s (0 bottom, 1 top) of points on the surface: the inverse of
-        :meth:`point` (the nearest point of the interpolated section, projected).
+        """Surface parameter s (0 bottom, 1 top) of points on the surface: the inverse of
+        :meth:`point` (the nearest point of the section, projected).
 
         points (..., 3) -> (...). Points off the surface get the s of their nearest point.
         """
         p = np.asarray(points, float)
         shape = p.shape[:-1]
-        _, _, _, t, dist2 = self._project(p.reshape(-1, 3))
+        k, _, _, _, t, dist2 = self._project(p.reshape(-1, 3))
         j = np.argmin(dist2, axis=1)
-        tj = t[np.arange(len(j)), j]
-        return ((j + tj) / (self.resample - 1)).reshape(shape)
+        rows = np.arange(len(j))
+        tj = t[rows, j]
+        u = self._u[k]
+        return (u[rows, j] + tj * (u[rows, j + 1] - u[rows, j])).reshape(shape)
 
     def area_at(self, x):
-        """Cross-sectional area of the whole (both halves) section at x [deck length^2]."""
+        """Cross-sectional area of the whole (both halves) section at x [deck length^2].
+
+        The half polygon is closed across the symmetry plane (top point to (0, z_top), down
+        y = 0 to (0, z_bottom), back to the bottom point), as the mirror image closes it;
+        0 outside the stations.
+        """
         sec = self._sections_at(x)
         y, z = sec[..., 0], sec[..., 1]
-        # Shoelace over the half polygon closed along the symmetry plane, doubled.
+        # Shoelace; the two closing pieces through y = 0 contribute y_top z_top - y_bot z_bot.
         half = 0.5 * np.abs(np.sum(y[..., :-1] * z[..., 1:] - y[..., 1:] * z[..., :-1], -1)
-                            + y[..., -1] * z[..., 0] - y[..., 0] * z[..., -1])
+                            + y[..., -1] * z[..., -1] - y[..., 0] * z[..., 0])
         inside = (np.asarray(x) >= self.x[0]) & (np.asarray(x) <= self.x[-1])
         return np.where(inside, 2.0 * half, 0.0)
 
     @property
     def error_lipschitz(self):
-        """A bound on |d signed_distance / d length| along any straight line [-]."""
-        return self._lipschitz
+        """A bound on |d signed_distance / d length| along any straight line [-].
+
+        The in-plane distance changes at most 1 per unit in y, z and at most the largest
+        speed v of the matched section points per unit x, so 1 + v bounds
+        sqrt(1 + v^2). It holds between the end stations and away from repeated joint
+        stations, where the distance jumps by up to the step between the two sections.
+        """
+        return self._lipschitz[0]
+
+    def error_lipschitz_between(self, pa, pb):
+        """Local bound of :attr:`error_lipschitz` on the segments pa -> pb, vectorised:
+        1 + the largest section speed over the station pairs the segment's x range spans."""
+        xa = np.asarray(pa, float)[..., 0]
+        xb = np.asarray(pb, float)[..., 0]
+        ka, _ = self._pair(np.minimum(xa, xb))
+        kb, _ = self._pair(np.maximum(xa, xb))
+        return 1.0 + range_max(self._lipschitz[1], ka, kb)
 
     def signed_distance(self, points):
-        """Distance in the plane x = const to the interpolated section, negative inside.
+        """Distance in the plane x = const to the section, negative inside [deck length].
 
-        points (..., 3) -> (...) [deck length]; the section is closed by its mirror image.
+        points (..., 3) -> (...); the section is closed by its mirror image. The distance
+        is to the polylines the deck gives (blended between stations), exact to rounding.
         """
         p = np.asarray(points, float)
         shape = p.shape[:-1]
         p = p.reshape(-1, 3)
-        a, d, q, _, dist2 = self._project(p)
+        _, a, d, q, _, dist2 = self._project(p)
         dist = np.sqrt(dist2.min(-1))
         # Inside test: crossing number against the half outline closed along y = 0.
         ya, za = a[..., 0], a[..., 1]
@@ -563,7 +679,7 @@ class ArbitraryBody:
         return np.where(inside, -dist, dist).reshape(shape)
 
     def cross_sections(self, n_points=None):
-        """(n_stations, n_points, 3): the input stations resampled to equal arc-length counts."""
+        """(n_stations, n_points, 3): the input stations at equally spaced s (0 to 1)."""
         n = 19 if n_points is None else int(n_points)
         s = np.linspace(0.0, 1.0, n)
         return self.point(self.x[:, None], s[None, :])
@@ -572,7 +688,7 @@ class ArbitraryBody:
         """Body networks as for :meth:`CircularBody.networks` (points bottom to top).
 
         With ``n_points=None`` a segment whose sections all have the same point count is
-        written with its input points; otherwise sections are resampled by arc length.
+        written with its input points; otherwise sections are sampled at equal s.
         """
         out, start = {}, 0
         for i, s in enumerate(self.segments, 1):
