@@ -8,7 +8,10 @@ after the last region back to 0 at the end of the fuselage. Upper-surface points
 equally from theta = pi/2 down to theta_b, except where a fin stands on the fuselage: there
 they begin at the fin's intersection angle. Lower-surface points run from -pi/2 up to the
 lower bounding curve. Stations: the body's own plus every intersection point's x, so each
-network boundary passes exactly through the intersection points it meets.
+network boundary passes exactly through the intersection points it meets. A wing boundary
+given with its points ends each row exactly there; where the point is off the body (a lofting
+line that misses it, :mod:`juncture.misses`) and the wing covers that side, the row is empty
+(every point that point) and the body stations next to it are left out.
 """
 
 from __future__ import annotations
@@ -22,13 +25,20 @@ __all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "
 
 
 class Boundary:
-    """A curve on the body given by stations x and angles theta (sorted in x)."""
+    """A curve on the body given by stations x and angles theta (sorted in x).
 
-    def __init__(self, x, theta, name=""):
-        order = np.argsort(x)
+    ``points`` (k, 3), optional: the curve's exact points. The network rows at its stations
+    end there; a point off the body is where a wing line that misses the body ends
+    (:mod:`juncture.misses`), and where its angle is the top (bottom) the row of the upper
+    (lower) surface is empty: every point of it is that point.
+    """
+
+    def __init__(self, x, theta, name="", points=None):
+        order = np.argsort(x, kind="stable")
         self.x = np.asarray(x, float)[order]
         self.theta = np.asarray(theta, float)[order]
         self.name = name
+        self.points = None if points is None else np.asarray(points, float)[order]
 
     def at(self, x):
         """Angle at stations x (linear between the boundary's points)."""
@@ -80,9 +90,11 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     """
     xg = body.x_global if stations is None else np.asarray(stations, float)
     x_nose, x_end = float(body.x_global[0]), float(body.x_global[-1])
-    xu = np.unique(np.concatenate([xg] + [r.x for r in upper_regions] + [f.x for f in fins]))
-    xl = np.unique(np.concatenate([xg] + [r.x for r in lower_regions]))
     bottom, top_value, side = body_range(body)
+    xu = np.unique(np.concatenate([_kept(xg, upper_regions, top_value)]
+                                  + [r.x for r in upper_regions] + [f.x for f in fins]))
+    xl = np.unique(np.concatenate([_kept(xg, lower_regions, bottom)]
+                                  + [r.x for r in lower_regions]))
     th_u = bounding_curve(xu, upper_regions, x_nose, x_end, side)
     th_l = bounding_curve(xl, lower_regions, x_nose, x_end, side)
     top = np.full(xu.size, top_value)
@@ -93,8 +105,44 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     t_l = np.linspace(0.0, 1.0, int(n_lower))
     up = body.point(xu[:, None], top[:, None] + t_u[None, :] * (th_u - top)[:, None])
     lo = body.point(xl[:, None], bottom + t_l[None, :] * (th_l - bottom)[:, None])
+    _end_at_points(up, xu, upper_regions, top_value)
+    _end_at_points(lo, xl, lower_regions, bottom)
     radial = radial_outward(body)
     return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
+
+
+def _empty(region, far):
+    """Stations of a region whose row is empty (the angle at the arc's far end)."""
+    return np.abs(region.theta - far) <= 1e-12
+
+
+def _kept(xg, regions, far):
+    """Body stations that do not fall between a region's stations next to an empty row.
+
+    Between a station where the wing covers that side of the body (an empty row, at a
+    point off the body) and its neighbours the network joins the rows directly, as the
+    juncture blocks do: a body station there would add panels from the body to that point.
+    """
+    keep = np.ones(xg.size, bool)
+    for reg in regions:
+        if reg.points is None or reg.x.size < 2:
+            continue
+        e = _empty(reg, far)
+        for i in np.flatnonzero(e[:-1] | e[1:]):
+            keep &= ~((xg > reg.x[i]) & (xg < reg.x[i + 1]))
+    return xg[keep]
+
+
+def _end_at_points(net, xs, regions, far):
+    """Rows at a region's stations end at its points; empty rows are all that point."""
+    for reg in regions:
+        if reg.points is None:
+            continue
+        rows = np.searchsorted(xs, reg.x)
+        ok = (rows < xs.size) & (xs[np.minimum(rows, xs.size - 1)] == reg.x)
+        rows, pts, e = rows[ok], reg.points[ok], _empty(reg, far)[ok]
+        net[rows, -1] = pts
+        net[rows[e]] = pts[e][:, None, :]
 
 
 def seam_gap(points, net):

@@ -6,6 +6,11 @@ trailing-edge blending (eqs 8-10), optionally shrink the fuselage so that body +
 equals the original area at every fillet station (eqs 11-14), and lay out the output blocks
 (4 or 6 blocks, or a single fuselage network). Components other than the wing and the fuselage
 are passed through as their own networks.
+
+A lofting line that misses the fuselage ends where it reaches the plane of symmetry, with no
+fillet (:mod:`juncture.misses`, which says why not at the body's bottom as TM-4406's special
+case). The single fuselage network's lines are re-interpolated as
+:mod:`juncture.single_network` describes.
 """
 
 from __future__ import annotations
@@ -21,15 +26,9 @@ from .fillet.circular import circular_fillet
 from .fillet.cubic import FilletLines, cubic_fillet
 from .geometry import Geometry
 from .intersect import intersect_body_both
+from .misses import ended_lines, line_ends
 from .model import CircularBody, Configuration
-from .networks import (
-    arc_points,
-    body_range,
-    juncture_networks,
-    orient,
-    radial_outward,
-    split_counts,
-)
+from .networks import body_range, juncture_networks, split_counts
 from .options import CompleteOptions, check_combination
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
@@ -37,28 +36,18 @@ __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 FilletKind = Literal["cubic", "circular"]
 
 
-def sharp_fillet(inter):
-    """Degenerate one-point "fillet" lines at the intersection (no fillet)."""
-    pts = inter.points.copy()
-    theta = inter.theta.copy()
-    m = len(pts)
-    return FilletLines(inter.side, pts[:, None, :], pts, pts, theta, inter.u.copy(),
-                       np.zeros(m), np.zeros(m, bool), "none", ())
+def sharp_fillet(inter, ends=None):
+    """Degenerate one-point "fillet" lines at the intersection (no fillet).
 
-
-def _sharp_with_misses(body, inter, upper_inter):
-    """No fillet; a lower line that misses the body ends at the body's bottom (TM-4406)."""
-    if inter.found.all():
-        return sharp_fillet(inter)
-    x = np.where(inter.found, inter.points[:, 0], upper_inter.points[:, 0])
-    theta = np.where(inter.found, inter.theta, body_range(body)[0])
-    pts = np.where(inter.found[:, None], inter.points, body.point(x, theta))
-    u = np.where(inter.found, inter.u, 0.0)
+    ``ends`` (:class:`juncture.misses.LineEnds`) gives where lines that miss the body end
+    instead (continued to the plane of symmetry); without it their points are NaN.
+    """
+    pts = (inter.points if ends is None else ends.points).copy()
+    theta = (inter.theta if ends is None else ends.theta).copy()
+    u = (inter.u if ends is None else ends.u).copy()
     m = len(pts)
-    log = tuple(f"{inter.name}: lofting line {j + 1} misses the body; joined at its bottom"
-                for j in np.flatnonzero(~inter.found))
     return FilletLines(inter.side, pts[:, None, :], pts, pts, theta, u, np.zeros(m),
-                       np.zeros(m, bool), "none", log)
+                       np.zeros(m, bool), "none", () if ends is None else ends.log)
 
 
 def _pick(cfg, name, kind):
@@ -146,7 +135,8 @@ def _fillet_maker(wing, fillet, opts, body0):
         ranges = (None, None) if previous is None else (previous[2].blend_range,
                                                         previous[3].blend_range)
         if fillet is None:
-            return iu, il, sharp_fillet(iu), _sharp_with_misses(body, il, iu)
+            return (iu, il, sharp_fillet(iu, line_ends(wing, body, iu)),
+                    sharp_fillet(il, line_ends(wing, body, il)))
         if fillet == "cubic":
             end_value = opts.end_value
             if end_value is None:
@@ -154,9 +144,13 @@ def _fillet_maker(wing, fillet, opts, body0):
             kw = dict(theta_u=theta_u, end=opts.end, end_value=end_value,
                       blend_length=opts.blend_length, n_points=opts.n_fillet_points,
                       remedy=opts.remedy, blending=opts.blending)
-            return (iu, il, cubic_fillet(wing, body, iu, blend_range=ranges[0], **kw),
-                    cubic_fillet(wing, body, il, upper_reference=iu, blend_range=ranges[1],
-                                 **kw))
+            # Lines that miss: continued to the plane of symmetry, no fillet (misses.py).
+            up, lo = line_ends(wing, body, iu), line_ends(wing, body, il)
+            return (iu, il,
+                    ended_lines(cubic_fillet(wing, body, iu, blend_range=ranges[0], **kw), up,
+                                up.missed),
+                    ended_lines(cubic_fillet(wing, body, il, upper_reference=iu,
+                                             blend_range=ranges[1], **kw), lo, lo.missed))
         if fillet == "circular":
             kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points)
             up, lo = (previous[2].u_end, previous[3].u_end) if warm else (None, None)
@@ -165,44 +159,6 @@ def _fillet_maker(wing, fillet, opts, body0):
                     circular_fillet(wing, body, il, rho, hint=lo, blend_range=ranges[1], **kw))
         raise GeometryError(f"fillet must be None, 'cubic' or 'circular', found {fillet!r}")
     return make
-
-
-def _reinterpolated_lower(body, upper, lower):
-    """Lower fillet start line re-interpolated at the upper starts' x (TM-4406 fig 4)."""
-    xu = upper.start[:, 0]
-    order = np.argsort(lower.start[:, 0])
-    theta = np.interp(xu, lower.start[order, 0], lower.theta_start[order])
-    start = body.point(xu, theta)
-    pts = lower.points.copy()
-    pts[:, 0] = start
-    return FilletLines(lower.side, pts, start, lower.end, theta, lower.u_end, lower.blend,
-                       lower.dips, lower.kind, lower.log)
-
-
-def _single_network(wing, body, upper, lower, n_half):
-    """Fuselage as one network (fig 5) plus the two wing networks (6-block style)."""
-    nets, seams = juncture_networks(wing, body, upper, lower, 6, n_half)
-    b_lo, b_hi, _ = body_range(body)
-    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half, b_lo, b_hi)
-    xu = upper.start[:, 0]
-    bottom, top = np.full(xu.size, b_lo), np.full(xu.size, b_hi)
-    region = np.concatenate([arc_points(body, xu, bottom, lower.theta_start, n_below),
-                             arc_points(body, xu, upper.theta_start, top, n_above)], axis=1)
-    xg = body.x_global
-
-    def ring(xs, lo, hi):
-        xs = np.asarray(xs, float)
-        return np.concatenate([arc_points(body, xs, np.full(xs.size, b_lo),
-                                          np.full(xs.size, lo), n_below),
-                               arc_points(body, xs, np.full(xs.size, hi),
-                                          np.full(xs.size, b_hi), n_above)], axis=1)
-
-    ahead = ring(xg[xg < xu[0]], lower.theta_start[0], upper.theta_start[0])
-    behind = ring(xg[xg > xu[-1]], lower.theta_start[-1], upper.theta_start[-1])
-
-    single = orient(np.concatenate([ahead, region, behind]), radial_outward(body))
-    out = {"body": single, "wing upper": nets["wing upper"], "wing lower": nets["wing lower"]}
-    return out, [s for s in seams if s["a"].startswith("wing")]
 
 
 def _with_empennage(cfg, wing, opts):
@@ -280,8 +236,8 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
     from .body_split import Boundary, boundary_from_points, seam_gap, split_body
 
-    ups = [Boundary(fu.start[:, 0], fu.theta_start, "wing")]
-    los = [Boundary(fl.start[:, 0], fl.theta_start, "wing")]
+    ups = [Boundary(fu.start[:, 0], fu.theta_start, "wing", fu.start)]
+    los = [Boundary(fl.start[:, 0], fl.theta_start, "wing", fl.start)]
     fins = []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
@@ -328,6 +284,10 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     keep_area : bool
         Re-design the fuselage radius so body + fillet area equals the original area at every
         fillet station (TM-4406, "Redesign To Compensate for Added Volume").
+
+        Lofting lines that miss the fuselage (a high wing's upper surface passing over it,
+        a low wing's lower surface under it) are continued to the plane of symmetry, where
+        they meet their mirror image, with no fillet (:mod:`juncture.misses`).
     options : CompleteOptions, optional
         Every other choice; keyword arguments override its fields, e.g.
         ``complete(cfg, "cubic", theta_u_deg=30, blocks=6)``.
@@ -428,9 +388,12 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     layout = opts.blocks
     if layout is None:
         layout = "split" if attached else 4
+    lower_points = il.points
     if opts.single_network:
-        fl = _reinterpolated_lower(body, fu, fl)
-        nets, seams = _single_network(wing, body, fu, fl, n_half)
+        from .single_network import reinterpolated, single_network
+
+        fu, fl, lower_points = reinterpolated(wing, body, fu, fl, iu, il, fillet)
+        nets, seams = single_network(wing, body, fu, fl, n_half, net_stations)
     elif layout == "split":
         nets, seams = _split_layout(body, wing, fu, fl, attached, n_half, log, net_stations)
     else:
@@ -457,8 +420,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
     sym = {k: "xz" for k in nets}
     intersections = {f"{wing.name}/{body.name} upper": iu.points,
-                     f"{wing.name}/{body.name} lower": (fl.start if opts.single_network and
-                                                         fillet is None else il.points)}
+                     f"{wing.name}/{body.name} lower": lower_points}
     intersections.update(other_inters)
     for k, (net, plane) in other_nets.items():
         nets[k] = net

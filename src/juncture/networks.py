@@ -13,14 +13,20 @@ The body ahead and aft uses, at every station, the point distribution of the win
 end arcs (TM-4406 fig 5: points below and above the wing leading-edge intersection angle
 theta_w in proportion to arc length), so neighbouring blocks share identical boundary points.
 All networks are oriented with outward normals (docs/conventions.md).
+
+Every body arc ends exactly at the fillet start (or intersection) of its lofting line, and
+the forward and aft networks' rings at the wing's leading- and trailing-edge stations are
+made of the wing region's end arcs, so the seams close exactly. Where a lofting line misses
+the body and the wing covers that side of it (:mod:`juncture.misses`), the arc is empty:
+every point of it is the line's end point, off the body.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["body_range", "split_counts", "arc_points", "orient", "radial_outward",
-           "juncture_networks"]
+__all__ = ["body_range", "split_counts", "arc_points", "arc_to", "orient", "radial_outward",
+           "juncture_networks", "layout_pieces", "ring"]
 
 
 def body_range(body):
@@ -40,9 +46,12 @@ def split_counts(theta_w, n_points, bottom=-0.5 * np.pi, top=0.5 * np.pi):
     """Points below / above theta_w for a half-section of ``n_points`` (TM-4406 fig 5).
 
     The share below is the arc from the bottom to theta_w over the whole half-section; both
-    parts get at least 2 points and share the point at theta_w.
+    parts get at least 2 points and share the point at theta_w. A theta_w that is not finite
+    (no leading-edge point on the body) splits the half-section in the middle.
     """
     frac = (theta_w - bottom) / (top - bottom)
+    if not np.isfinite(frac):
+        frac = 0.5
     n_below = int(np.clip(round(frac * (n_points - 1)) + 1, 2, n_points - 1))
     return n_below, n_points - n_below + 1
 
@@ -53,6 +62,21 @@ def arc_points(body, x, theta_from, theta_to, n):
     th = np.asarray(theta_from, float)[:, None] + t[None, :] * (
         np.asarray(theta_to, float) - np.asarray(theta_from, float))[:, None]
     return body.point(np.asarray(x, float)[:, None], th)
+
+
+def arc_to(body, x, theta_from, theta_to, n, end):
+    """Body arcs like :func:`arc_points` that end exactly at the points ``end`` (m, 3).
+
+    The last point of each arc is ``end`` (the start of a fillet or wing line, normally the
+    body point at ``theta_to``). Where the arc is empty (``theta_to`` equals ``theta_from``:
+    the wing covers that side of the body, :mod:`juncture.misses`) every point is ``end``.
+    """
+    arc = arc_points(body, x, theta_from, theta_to, n)
+    end = np.asarray(end, float)
+    arc[:, -1] = end
+    empty = np.abs(np.asarray(theta_to, float) - np.asarray(theta_from, float)) <= 1e-12
+    arc[empty] = end[empty, None, :]
+    return arc
 
 
 def orient(net, outward):
@@ -84,6 +108,52 @@ def _strip(wing, fillet, side, k_first):
     return np.concatenate([fillet.points, sec], axis=1)
 
 
+def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None):
+    """The raw pieces every juncture layout is cut from (not yet oriented).
+
+    Returns a dict: ``arc_u`` (n_stations, n_above, 3), body arcs from the top down to each
+    upper fillet start; ``arc_l`` (n_stations, n_below, 3), from the bottom up to each lower
+    fillet start (each ending exactly at the start, :func:`arc_to`); ``strip_u``,
+    ``strip_l`` (n_stations, n_span, 3), fillet lines then the lofting lines outboard;
+    ``ahead`` (k, n_below + n_above - 1, 3) body sections from the nose to the wing's
+    leading-edge station and ``behind`` from its trailing-edge station to the end, whose
+    ring at the wing station is made of the first (last) arcs, so that the blocks share
+    their boundary points; and ``n_below``, ``n_above``.
+    """
+    u_end = np.concatenate([upper.u_end, lower.u_end])
+    k_first = min(max(int(np.floor(np.nanmax(u_end))) + 1, 1), wing.n_sections - 1)
+    n_half = n_body_points or (getattr(body, "points_per_section", None) or (19,))[0]
+    bottom, top, _ = body_range(body)
+    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half, bottom, top)
+    xu, xl = upper.start[:, 0], lower.start[:, 0]
+    arc_u = arc_to(body, xu, np.full(xu.size, top), upper.theta_start, n_above, upper.start)
+    arc_l = arc_to(body, xl, np.full(xl.size, bottom), lower.theta_start, n_below, lower.start)
+    xg = body.x_global if stations is None else np.asarray(stations, float)
+    x_le, x_te = min(xu[0], xl[0]), max(xu[-1], xl[-1])
+
+    def sections(xs, theta_lo, theta_hi):
+        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, theta_lo),
+                           n_below)
+        above = arc_points(body, xs, np.full(xs.size, theta_hi), np.full(xs.size, top), n_above)
+        return np.concatenate([below, above[:, 1:]], axis=1)
+
+    return {"arc_u": arc_u, "arc_l": arc_l, "n_below": n_below, "n_above": n_above,
+            "strip_u": _strip(wing, upper, "upper", k_first),
+            "strip_l": _strip(wing, lower, "lower", k_first),
+            "ahead": np.concatenate([sections(xg[xg < x_le], lower.theta_start[0],
+                                              upper.theta_start[0]),
+                                     ring(arc_l[:1], arc_u[:1])]),
+            "behind": np.concatenate([ring(arc_l[-1:], arc_u[-1:]),
+                                      sections(xg[xg > x_te], lower.theta_start[-1],
+                                               upper.theta_start[-1])])}
+
+
+def ring(arc_l, arc_u):
+    """Cross-sections (k, n_below + n_above - 1, 3) from lower arcs (bottom up) and upper arcs
+    (top down) that meet at the wing's leading or trailing edge (the shared point once)."""
+    return np.concatenate([arc_l, arc_u[:, ::-1][:, 1:]], axis=1)
+
+
 def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, stations=None):
     """Output networks of a wing-body juncture, and the gaps along their shared seams.
 
@@ -94,7 +164,8 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
         The (possibly re-designed) body.
     upper, lower : FilletLines
         Fillet lines of each surface; for no fillet, degenerate lines at the intersection
-        (see :func:`juncture.completion.sharp_fillet`).
+        (see :func:`juncture.completion.sharp_fillet`), or where a lofting line misses the
+        body, at its end point (:mod:`juncture.misses`).
     blocks : {4, 6}
     n_body_points : int, optional
         Points per half cross-section of the body ahead and aft (default: the body's own
@@ -113,29 +184,10 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
 
     if blocks not in (4, 6):
         raise GeometryError(f"blocks must be 4 or 6, found {blocks!r}")
-    u_end = np.concatenate([upper.u_end, lower.u_end])
-    k_first = min(max(int(np.floor(np.nanmax(u_end))) + 1, 1), wing.n_sections - 1)
-    n_half = n_body_points or (getattr(body, "points_per_section", None) or (19,))[0]
-    bottom, top, _ = body_range(body)
-    n_below, n_above = split_counts(float(upper.theta_start[0]), n_half, bottom, top)
-    xu, xl = upper.start[:, 0], lower.start[:, 0]
-    arc_u = arc_points(body, xu, np.full(xu.size, top), upper.theta_start, n_above)
-    arc_l = arc_points(body, xl, np.full(xl.size, bottom), lower.theta_start, n_below)
-    strip_u = _strip(wing, upper, "upper", k_first)
-    strip_l = _strip(wing, lower, "lower", k_first)
-    xg = body.x_global if stations is None else np.asarray(stations, float)
-    x_le, x_te = xu[0], xu[-1]
-    ahead = np.concatenate([xg[xg < x_le], [x_le]])
-    aft = np.concatenate([[x_te], xg[xg > x_te]])
-
-    def sections(xs, theta_lo, theta_hi):
-        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, theta_lo),
-                           n_below)
-        above = arc_points(body, xs, np.full(xs.size, theta_hi), np.full(xs.size, top), n_above)
-        return np.concatenate([below, above[:, 1:]], axis=1)
-
-    fwd = sections(ahead, lower.theta_start[0], upper.theta_start[0])
-    aft_net = sections(aft, lower.theta_start[-1], upper.theta_start[-1])
+    p = layout_pieces(wing, body, upper, lower, n_body_points, stations)
+    arc_u, arc_l, strip_u, strip_l = p["arc_u"], p["arc_l"], p["strip_u"], p["strip_l"]
+    n_below, n_above = p["n_below"], p["n_above"]
+    fwd, aft_net = p["ahead"], p["behind"]
     seams = []
 
     def seam(a, b, name, pa, pb):
@@ -159,10 +211,10 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
         seam("body lower", "wing lower", "fillet start line", arc_l[:, -1], strip_l[:, 0])
     nets["body aft"] = aft_net
     for net_name, end, xs_net in (("body forward", 0, fwd), ("body aft", -1, aft_net)):
-        ring = xs_net[-1] if end == 0 else xs_net[0]
-        seam(net_name, names_u, "cross-section above the wing", ring[n_below - 1:],
+        edge = xs_net[-1] if end == 0 else xs_net[0]
+        seam(net_name, names_u, "cross-section above the wing", edge[n_below - 1:],
              arc_u[end][::-1])
-        seam(net_name, names_l, "cross-section below the wing", ring[:n_below], arc_l[end])
+        seam(net_name, names_l, "cross-section below the wing", edge[:n_below], arc_l[end])
     wu, wl = ("wing upper", "wing lower") if blocks == 6 else (names_u, names_l)
     seam(wu, wl, "leading-edge lofting line", wing_u[0], wing_l[0])
     seam(wu, wl, "trailing-edge lofting line", wing_u[-1], wing_l[-1])

@@ -70,3 +70,31 @@ def test_a_warm_started_circular_fillet_is_the_cold_one():
     cold = circular_fillet(wing, smaller, inter, 0.6)
     warm = circular_fillet(wing, smaller, inter, 0.6, hint=first.u_end)
     np.testing.assert_allclose(warm.points, cold.points, atol=1e-10)
+
+
+@pytest.mark.parametrize("z_root, side", [(2.5, "upper"), (-2.5, "lower")])
+def test_lines_that_miss_the_body_are_left_sharp_where_they_reach_the_plane_of_symmetry(
+        z_root, side):
+    """Issue 11: no NaN. A lofting line that misses the body (here the upper lines of a high
+    wing, the lower lines of a low wing) has no junction to round: its fillet line is the
+    point where the line reaches y = 0 (juncture.misses)."""
+    cfg = wing_body(z_root=z_root, thickness=10.0)
+    wing, body = cfg["wing"], cfg["body"]
+    inter = intersect_body(wing, body, side)
+    missed = ~inter.found
+    assert missed.sum() >= 5
+    f = circular_fillet(wing, body, inter, 0.5)
+    assert np.isfinite(f.points).all() and np.isfinite(f.theta_start).all()
+    pts = f.points[missed]
+    np.testing.assert_array_equal(pts, np.broadcast_to(pts[:, :1], pts.shape))
+    np.testing.assert_array_equal(pts[:, 0, 1], 0.0)
+    # On the extended lofting line of its chord station (through sections 1 and 2).
+    lines = wing.lofting_lines(side)[missed]
+    a, d = lines[:, 0], lines[:, 1] - lines[:, 0]
+    t = (0.0 - a[:, 1]) / d[:, 1]
+    np.testing.assert_allclose(pts[:, 0], a + t[:, None] * d, rtol=0, atol=1e-12)
+    # Off the body, on the side the surface passes (above for the upper surface).
+    err = body.radial_error(pts[:, 0])
+    assert np.all(err > 0.05)
+    assert np.all(np.sign(pts[:, 0, 2] - body.center_at(pts[:, 0, 0])[:, 1]) == np.sign(z_root))
+    assert np.all(f.blend[missed] == 0) and np.all(f.blend[~missed][1:-1] > 0)

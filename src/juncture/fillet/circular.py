@@ -13,6 +13,13 @@ arc length are continuous with the lofting line but that of x is not (as the pap
 Towards the leading and trailing edges the radius is scaled by the blending function beta(L)
 of eqs 8-9 (the cubic fillet's ``blending="scale"``), so the edges stay sharp and every fillet
 line starts on the body.
+
+A lofting line that misses the body has no junction to round: the paper gives no circular
+arc for it (its special case, a fillet starting at the body's bottom with dx/dy = dz/dy = 0,
+is one a circular arc cannot meet in general: from the bottom of the body to a lower surface
+that passes under it, a curve must first bend down and then up). Such a line is left sharp as
+without a fillet: it ends where it reaches the plane of symmetry (:mod:`juncture.misses`), and
+its fillet line is degenerate there, so the fillet is finite on every line.
 """
 
 from __future__ import annotations
@@ -22,9 +29,10 @@ import numpy as np
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, find_crossings
 from ..intersect.rays import SurfaceBound
+from ..misses import ended_lines, line_ends
 from .cubic import FilletLines, blend_over
 
-__all__ = ["circular_fillet"]
+__all__ = ["circular_fillet", "arcs"]
 
 
 def _normals(lines, sign):
@@ -35,6 +43,28 @@ def _normals(lines, sign):
     # lofting line running outboard (+y) this points up.
     n = np.stack([np.zeros(len(d)), -dp[:, 2], dp[:, 1]], axis=1) * sign
     return dp, n
+
+
+def arcs(body, P, C, rho, n_points):
+    """Arcs of radius rho (k,) about C (k, 3) from the body to P (k, 3), in the planes x = P_x.
+
+    The arc starts at T, the body point towards C (where a circle about C of radius rho
+    touches the body when |C - centre| = r + rho), and runs the short way round to P.
+    Returns ``(points (k, n_points, 3), T (k, 3), theta_T (k,))``.
+    """
+    x = P[:, 0]
+    ctr = body.center_at(x)
+    th = np.arctan2(C[:, 2] - ctr[:, 1], C[:, 1] - ctr[:, 0])
+    T = body.point(x, th)
+    a0 = np.arctan2(T[:, 2] - C[:, 2], T[:, 1] - C[:, 1])
+    a1 = np.arctan2(P[:, 2] - C[:, 2], P[:, 1] - C[:, 1])
+    da = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
+    t = np.linspace(0.0, 1.0, int(n_points))
+    ang = a0[:, None] + da[:, None] * t[None, :]
+    pts = np.stack([np.broadcast_to(x[:, None], ang.shape),
+                    C[:, 1, None] + rho[:, None] * np.cos(ang),
+                    C[:, 2, None] + rho[:, None] * np.sin(ang)], axis=-1)
+    return pts, T, th
 
 
 def _lipschitz(body, radius):
@@ -78,7 +108,9 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     Returns
     -------
     FilletLines
-        ``kind = "circular"``; ``u_end`` is the tangency point's section coordinate.
+        ``kind = "circular"``; ``u_end`` is the tangency point's section coordinate. A line
+        that misses the body is degenerate at its end point on the plane of symmetry
+        (module docstring).
     """
     side = inter.side
     sign = 1.0 if side == "upper" else -1.0
@@ -88,7 +120,8 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     m = lines.shape[0]
     if np.any(np.asarray(rho_of(lines[:, 0, 0])) <= 0):
         raise GeometryError("circular fillet radius must be > 0", wing.name)
-    x_i = np.where(inter.found, inter.points[:, 0], lines[:, 0, 0])
+    ends = line_ends(wing, body, inter)
+    x_i = ends.points[:, 0]
     beta, blend_range = blend_over(x_i, blend_length, blend_range)
     beta = np.where(inter.found, beta, 0.0)
     live = beta > 0
@@ -140,20 +173,10 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         x = P[:, 0]
         rho = beta[rows] * rho_of(x)
         C = P + rho[:, None] * n[rows]
-        ctr = body.center_at(x)
-        th = np.arctan2(C[:, 2] - ctr[:, 1], C[:, 1] - ctr[:, 0])
-        T = body.point(x, th)
-        # Arc from T (on the body) to P (on the wing) about C, the short way round.
-        a0 = np.arctan2(T[:, 2] - C[:, 2], T[:, 1] - C[:, 1])
-        a1 = np.arctan2(P[:, 2] - C[:, 2], P[:, 1] - C[:, 1])
-        da = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
-        t = np.linspace(0.0, 1.0, int(n_points))
-        ang = a0[:, None] + da[:, None] * t[None, :]
-        pts[rows] = np.stack([np.broadcast_to(x[:, None], ang.shape),
-                              C[:, 1, None] + rho[:, None] * np.cos(ang),
-                              C[:, 2, None] + rho[:, None] * np.sin(ang)], axis=-1)
+        pts[rows], T, th = arcs(body, P, C, rho, n_points)
         start[rows], E[rows], theta_b[rows], u_end[rows] = T, P, th, cr.u[ok]
         beta = beta.copy()
         beta[idx[~ok]] = 0.0
-    return FilletLines(side, pts, start, E, theta_b, u_end, beta, np.zeros(m, bool),
-                       "circular", tuple(log), blend_range)
+    out = FilletLines(side, pts, start, E, theta_b, u_end, beta, np.zeros(m, bool),
+                      "circular", tuple(log), blend_range)
+    return ended_lines(out, ends, ends.missed)
