@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 import juncture as jc
-from juncture.analysis.areas import mach_plane_area_distribution, normal_area_distribution
+from juncture.analysis.areas import normal_area_distribution
+from juncture.analysis.machplanes import mach_plane_area_distribution
 from support import EXAMPLE_DECK
 
 

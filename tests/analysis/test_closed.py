@@ -10,13 +10,10 @@ import numpy as np
 import pytest
 
 import juncture as jc
-from juncture.analysis.areas import (
-    mach_plane_area_distribution,
-    normal_area_distribution,
-    winglike_normal_area,
-)
+from juncture.analysis.areas import normal_area_distribution, winglike_normal_area
 from juncture.analysis.closed import body_solid, closed_networks, oriented, winglike_solid
 from juncture.analysis.cuts import normal_areas, triangulate
+from juncture.analysis.machplanes import mach_plane_area_distribution
 from juncture.errors import GeometryError, JunctureError
 from juncture.model import CircularBody, Configuration, WingLike
 from support import EXAMPLE_DECK, PDAS_DECK

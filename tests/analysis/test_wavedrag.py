@@ -9,6 +9,7 @@ Reference values are closed forms (wavedrag.md; Ashley & Landahl ch. 9):
   D/q = 128 S_max^2 / (3 pi l^2) (the sine coefficients of cos(k theta) on (0, pi) summed
   analytically).
 * A finite sine series S' = sum a_n sin(n theta): D/q = (pi/4) sum n a_n^2, S(l) = pi l a_1 / 4.
+* The least-drag curve's many-mode limit and the kernel sums: tests/analysis/references.py.
 """
 
 import dataclasses
@@ -19,16 +20,19 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from juncture.analysis._kernel import area_kernel, slope_kernel
 from juncture.analysis.cuts import mach_plane_areas, mach_plane_extents, normal_areas
 from juncture.analysis.wavedrag import (
     eminton_lord,
     eminton_lord_convergence,
     far_field_drag,
+    roll_angles,
     sears_haack_area,
     sears_haack_drag,
     von_karman,
 )
 from juncture.errors import GeometryError, JunctureError, JunctureWarning
+from tests.analysis.references import kernel_sum, least_drag_limit, least_drag_modes
 
 
 def sh_exact(volume, length):
@@ -293,3 +297,110 @@ def test_other_errors():
         far_field_drag(np.zeros((2, 6)), x[:4], [0.0, np.pi])
     with pytest.raises(JunctureError, match="reference area"):
         far_field_drag(np.zeros((2, 6)), x, [0.0, np.pi]).c_d(-1.0)
+
+
+# ---------------------------------------------------------------------------------------------
+# The infinite series: closed-form kernels and the many-mode limit (independent references in
+# tests/analysis/references.py: numpy sums and least squares on their own sine basis)
+
+
+def test_closed_form_kernels_equal_the_mode_sums():
+    rng = np.random.default_rng(5)
+    theta = np.concatenate([rng.uniform(0.0, np.pi, 5), [np.pi, 1e-3, 0.5, 0.5 + 1e-9]])
+    phi = np.concatenate([rng.uniform(0.0, np.pi, 4), [np.pi, 0.5, 2.0]])
+    k_sum, j_sum = kernel_sum(theta, phi)  # 200,000 modes: K's tail < 1e-11, J's ~ 1e-8
+    k = area_kernel(theta[:, None], phi[None, :])
+    assert np.abs(k - k_sum).max() < 1e-10
+    assert np.abs(slope_kernel(theta[:, None], phi[None, :]) - j_sum).max() < 1e-7
+    assert k == pytest.approx(area_kernel(phi[None, :], theta[:, None]), abs=1e-15)
+    g1 = phi - 0.5 * np.sin(2 * phi)
+    assert area_kernel(np.pi, phi) == pytest.approx(np.pi * g1, rel=1e-14)
+    # dK/dtheta = 2 sin(theta) J (centred differences)
+    h = 1e-6
+    dk = (area_kernel(theta[:, None] + h, phi) - area_kernel(theta[:, None] - h, phi)) / (2 * h)
+    inner = (theta > 2 * h) & (theta < np.pi - 2 * h)
+    assert dk[inner] == pytest.approx((2 * np.sin(theta[:, None]) *
+                                       slope_kernel(theta[:, None], phi))[inner], abs=1e-7)
+
+
+def kinked_cases():
+    """Station areas of kinked curves (S' jumps at stations): an open-base cone-cylinder-
+    boattail on uniform stations, and a seeded closed polyline on uneven ones."""
+    x1 = np.linspace(0.0, 10.0, 41)
+    s1 = np.interp(x1, [0.0, 3.0, 7.0, 10.0], [0.0, 1.0, 1.0, 0.6])
+    rng = np.random.default_rng(23)
+    x2 = np.concatenate([[0.0], np.sort(rng.uniform(0.05, 2.95, 27)), [3.0]]) + 4.0
+    knots = np.linspace(4.0, 7.0, 7)
+    s2 = np.interp(x2, knots, [0.0, 0.3, 0.9, 1.0, 0.7, 0.25, 0.0])
+    return [(x1, s1), (x2, s2)]
+
+
+@pytest.mark.parametrize("case", [0, 1])
+def test_eminton_lord_is_the_many_mode_limit_on_kinked_areas(case):
+    x, area = kinked_cases()[case]
+    limit, order = least_drag_limit(x, area)
+    assert order == pytest.approx(2.0, abs=0.15)  # the truncation error falls as N^-2
+    r = eminton_lord(x, area)
+    assert r.n_modes is None and r.nodes.shape == (x.size - 1,)
+    assert r.d_over_q == pytest.approx(limit, rel=1e-7)
+    assert r.area(x) == pytest.approx(area, abs=1e-12 * area.max())
+    assert r.residual < 1e-12 * area.max()
+    # the old default, max(400, 8 m) modes, leaves more than 1e-4 on these curves
+    old = eminton_lord(x, area, n_modes=max(400, 8 * x.size)).d_over_q
+    assert old / limit - 1.0 > 1e-4
+    assert old == pytest.approx(least_drag_modes(x, area, max(400, 8 * x.size)), rel=1e-9)
+    # the slope is the derivative of the area (independent kernels)
+    xm = 0.5 * (x[1:] + x[:-1])
+    h = 1e-6 * (x[-1] - x[0])
+    fd = (r.area(xm + h) - r.area(xm - h)) / (2 * h)
+    assert r.slope(xm) == pytest.approx(fd, abs=1e-6 * np.abs(fd).max())
+    # the first coefficients: a_n = (1/n) sum_i lambda_i g_n(theta_i); a_1 carries the base
+    assert r.base_area == pytest.approx(area[-1], abs=1e-12)
+    assert r.series(3) == pytest.approx(r.coefficients[:3], rel=1e-12)
+
+
+def test_infinite_series_drag_is_the_least():
+    x, area = kinked_cases()[0]
+    exact = eminton_lord(x, area).d_over_q
+    finite = eminton_lord_convergence(x, area, n_modes=(100, 400, 1600))[:, 1]
+    assert np.all(finite > exact) and np.all(np.diff(finite) < 0.0)
+    assert (finite[1] - exact) / (finite[2] - exact) == pytest.approx(16.0, rel=0.05)
+
+
+# ---------------------------------------------------------------------------------------------
+# Roll angles
+
+
+def test_roll_angles_half_turn_boole_and_full_turn():
+    th, w = roll_angles(16, half_turn=True)
+    assert th.size == 17 and np.degrees(np.diff(th)) == pytest.approx(np.full(16, 11.25))
+    assert th[0] == pytest.approx(-np.pi / 2) and th[-1] == pytest.approx(np.pi / 2)
+    assert w.sum() == pytest.approx(1.0, rel=1e-15)
+    assert (w * 16 * 45 / 2)[:9] == pytest.approx([7, 32, 12, 32, 14, 32, 12, 32, 14])
+    # Boole's rule integrates polynomials of degree 5 exactly: (1/pi) int theta^4 = pi^4 / 80
+    assert np.dot(w, th**4) == pytest.approx(np.pi**4 / 80, rel=1e-13)
+    assert np.dot(w, np.cos(th) ** 2) == pytest.approx(0.5, abs=1e-9)
+    th6, w6 = roll_angles(6, half_turn=True)  # not a multiple of 4: Simpson
+    assert (w6 * 18) == pytest.approx([1, 4, 2, 4, 2, 4, 1])
+    th5, w5 = roll_angles(5, half_turn=True)  # odd: trapezoid
+    assert (w5 * 10) == pytest.approx([1, 2, 2, 2, 2, 1])
+    thf, wf = roll_angles(8)
+    assert thf == pytest.approx(2 * np.pi * np.arange(8) / 8) and wf == pytest.approx(
+        np.full(8, 1 / 8))
+    with pytest.raises(JunctureError, match="n_theta must be at least 1"):
+        roll_angles(0)
+
+
+def test_far_field_with_weights():
+    x = np.linspace(0.0, 1.0, 41)
+    base = sears_haack_area(x, 1.0, 0.5)
+    th, w = roll_angles(4, half_turn=True)
+    scale = 1.0 + 0.3 * np.cos(th)
+    r = far_field_drag(scale[:, None] * base, x, th, weights=w)
+    one = eminton_lord(x, base).d_over_q
+    assert r.d_over_q == pytest.approx(one * np.dot(w, scale**2), rel=1e-12)
+    assert r.weights == pytest.approx(w) and r.thetas == pytest.approx(th)
+    with pytest.raises(JunctureError, match="summing to 1"):
+        far_field_drag(np.tile(base, (5, 1)), x, th, weights=2 * w)
+    with pytest.raises(JunctureError, match="or come with weights"):
+        far_field_drag(np.tile(base, (5, 1)), x, th)

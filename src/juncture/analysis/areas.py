@@ -44,10 +44,11 @@ import numpy as np
 
 from ..errors import GeometryError, JunctureError
 from ..model import ArbitraryBody, CircularBody, WingLike
+from ._components import body_box, boxes_overlap, copies, is_flow_through, wing_box
 from .cuts import normal_areas
 
-__all__ = ["normal_area_distribution", "mach_plane_area_distribution", "winglike_normal_area",
-           "default_stations"]
+__all__ = ["normal_area_distribution", "winglike_normal_area", "default_stations",
+           "is_flow_through"]
 
 #: Gauss-Legendre points per span piece.
 _N_GAUSS = 8
@@ -132,31 +133,6 @@ def _body_edges(body, x, span_axis):
     else:
         out = np.stack([sec[..., 1].min(axis=1), sec[..., 1].max(axis=1)], axis=-1)
     return np.where(inside, out, np.nan)
-
-
-def _body_box(body):
-    """(2, 3) bounding box of a body (its y >= 0 description; arbitrary: both halves)."""
-    if isinstance(body, CircularBody):
-        xs = np.linspace(body.x_global[0], body.x_global[-1], 401)
-        r = body.radius_at(xs)
-        c = body.center_at(xs)
-        lo = [xs[0], (c[:, 0] - r).min(), (c[:, 1] - r).min()]
-        hi = [xs[-1], (c[:, 0] + r).max(), (c[:, 1] + r).max()]
-        return np.array([lo, hi])
-    g = body._grid
-    return np.array([[body.x[0], -g[..., 0].max(), g[..., 1].min()],
-                     [body.x[-1], g[..., 0].max(), g[..., 1].max()]])
-
-
-def _wing_box(wing):
-    pts = np.concatenate([wing.section_points("upper").reshape(-1, 3),
-                          wing.section_points("lower").reshape(-1, 3)])
-    return np.array([pts.min(axis=0), pts.max(axis=0)])
-
-
-def _boxes_overlap(a, b):
-    tol = 1e-9 * max(1.0, float(np.abs(np.concatenate([a, b])).max()))
-    return bool(np.all(a[0] <= b[1] + tol) and np.all(b[0] <= a[1] + tol))
 
 
 def _union_overlap(lo, hi, t_lo, t_hi):
@@ -398,8 +374,8 @@ def winglike_normal_area(wing, x, bodies=(), n_gauss=_N_GAUSS):
     n_gauss = int(n_gauss)
     if n_gauss < 1:
         raise JunctureError(f"n_gauss must be at least 1, found {n_gauss}")
-    box = _wing_box(wing)
-    near = [b for b in bodies if _boxes_overlap(box, _body_box(b))]
+    box = wing_box(wing)
+    near = [b for b in bodies if boxes_overlap(box, body_box(b))]
     return _WingCut(wing, near).area(x, n_gauss)
 
 
@@ -428,21 +404,6 @@ def default_stations(obj, n_x=101):
     return np.linspace(ext[0, 0], ext[1, 0], n_x)
 
 
-def is_flow_through(body):
-    """True for a nacelle (a pod: off the centre line or mirrored) with an open front.
-
-    Its inlet captures a streamtube of the first station's radius; the area-rule practice is
-    to subtract that tube from the nacelle's areas (a flow-through nacelle), which also makes
-    the area distribution start continuously at the inlet.
-    """
-    return (isinstance(body, CircularBody) and (body.mirrored or body.origin[1] != 0.0)
-            and body.radius[0] > 0.0)
-
-
-def _copies(comp, cfg):
-    return 2.0 if (cfg.symmetric and comp.mirrored) else 1.0
-
-
 def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_GAUSS,
                              flow_through=True):
     """Normal cross-sectional areas ``A(x)`` of a configuration, both halves, from the model.
@@ -466,7 +427,7 @@ def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_G
         Gauss points per span piece of a wing-like component.
     flow_through : bool
         Subtract each open nacelle's inlet capture area (a flow-through nacelle, see
-        :func:`juncture.analysis.closed.is_flow_through`).
+        :func:`is_flow_through`).
 
     Returns
     -------
@@ -512,81 +473,23 @@ def normal_area_distribution(cfg, x=None, components=None, n_x=101, n_gauss=_N_G
                                  0.0)
         else:
             a = winglike_normal_area(comp, xs, bodies, n_gauss)
-        a = _copies(comp, cfg) * np.asarray(a, dtype=float)
+        a = copies(comp, cfg) * np.asarray(a, dtype=float)
         out[comp.name] = a
         total = total + a
     out["total"] = total
     return out
 
 
-def _face_extents(networks, mach, thetas):
-    """First and last Mach planes, stopping at a flat nose or base face rather than past it.
+def __getattr__(name):
+    # mach_plane_area_distribution moved to juncture.analysis.machplanes (areas no longer
+    # imports the closed networks): still importable from here, with a warning.
+    if name == "mach_plane_area_distribution":
+        import warnings
 
-    A configuration that ends in a flat face (an open base, the deck's usual fuselage end)
-    has, in the normal-area (slender-body) view, its base area as the last station. Oblique
-    planes slice such a face over a short interval of X whose areas fall from the base area
-    to zero; ending the equivalent body at the first plane that touches the face keeps the
-    open-base convention, so the far field tends to the normal-area result as M -> 1.
-    """
-    from .cuts import mach_plane_extents
+        from .machplanes import mach_plane_area_distribution
 
-    ext = np.array(mach_plane_extents(networks, mach, thetas), dtype=float)
-    items = networks.mirrored_networks().values() if hasattr(networks, "mirrored_networks") \
-        else (networks.values() if hasattr(networks, "values") else networks)
-    pts = np.concatenate([np.asarray(n, float).reshape(-1, 3) for n in items])
-    beta = np.sqrt(max(float(mach) ** 2 - 1.0, 0.0))
-    size = float(np.ptp(pts, axis=0).max()) or 1.0
-    for k, (end, pick) in enumerate(((pts[:, 0].min(), np.max), (pts[:, 0].max(), np.min))):
-        face = pts[np.abs(pts[:, 0] - end) <= 1e-9 * size]
-        if np.ptp(face[:, 1:], axis=0).max() <= 1e-9 * size:
-            continue  # a pointed end, not a face: keep the first / last touching plane
-        x_cut = face[:, 0][None, :] - beta * (face[:, 1][None, :] * np.cos(thetas)[:, None]
-                                              + face[:, 2][None, :] * np.sin(thetas)[:, None])
-        ext[:, k] = pick(x_cut, axis=1)
-    return ext
-
-
-def mach_plane_area_distribution(obj, mach, n_x=100, n_theta=16, networks=None):
-    """Far-field equivalent-body areas ``S(X, theta)`` of a whole configuration (both halves).
-
-    Parameters
-    ----------
-    obj : Configuration or Geometry
-        A Configuration is closed and resampled by
-        :func:`juncture.analysis.closed.closed_networks` (wing roots trimmed at the bodies);
-        a Geometry is cut as it is, with its mirror images, and must be closed and outward.
-    mach : float
-        Free-stream Mach number >= 1; M = 1 gives the normal areas for every angle.
-    n_x : int
-        Cuts per roll angle, equally spaced from the first to the last plane that touches
-        the configuration at that angle (:func:`juncture.analysis.cuts.mach_plane_extents`).
-    n_theta : int
-        Roll angles ``theta_k = 2 pi k / n_theta``, theta = 0 towards +y, pi/2 towards +z.
-    networks : mapping of str to (n_lines, n_points, 3) float, optional
-        Closed networks to cut instead of building them from ``obj``.
-
-    Returns
-    -------
-    dict
-        ``"thetas"`` (n_theta,) [rad], ``"x"`` (n_theta, n_x) plane offsets ``X`` [deck
-        length], ``"area"`` (n_theta, n_x) projected cut areas [deck length^2].
-
-    Notes
-    -----
-    For a configuration symmetric in y the areas satisfy ``S(X, theta) = S(X, pi - theta)``
-    (the image of a plane at theta is the plane at pi - theta); with roll angles measured
-    from the vertical, as some programs do (phi = pi/2 - theta), that is S(phi) = S(-phi).
-    """
-    from .closed import closed_networks
-    from .cuts import mach_plane_areas
-
-    n_theta, n_x = int(n_theta), int(n_x)
-    if n_theta < 1 or n_x < 2:
-        raise JunctureError(f"need n_theta >= 1 and n_x >= 2, found {n_theta} and {n_x}")
-    if networks is None:
-        networks = closed_networks(obj) if hasattr(obj, "components") else obj
-    thetas = 2.0 * np.pi * np.arange(n_theta) / n_theta
-    ext = _face_extents(networks, mach, thetas)
-    offsets = np.linspace(ext[:, 0], ext[:, 1], n_x).T
-    return {"thetas": thetas, "x": offsets,
-            "area": mach_plane_areas(networks, mach, thetas, offsets)}
+        warnings.warn("juncture.analysis.areas.mach_plane_area_distribution moved to "
+                      "juncture.analysis.machplanes (also juncture.analysis."
+                      "mach_plane_area_distribution)", DeprecationWarning, stacklevel=2)
+        return mach_plane_area_distribution
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -41,10 +41,10 @@ import numpy as np
 from ..errors import GeometryError
 from ..intersect import intersect_body, polyline_points
 from ..model import ArbitraryBody, CircularBody, WingLike
-from .areas import _body_box, _boxes_overlap, _wing_box, is_flow_through
+from ._components import body_box, boxes_overlap, held_bases, is_flow_through, wing_box
 
 __all__ = ["is_flow_through", "capture_tube", "closed_networks", "body_solid",
-           "winglike_solid", "oriented"]
+           "winglike_solid", "held_base_solids", "oriented"]
 
 
 def oriented(net, direction):
@@ -234,8 +234,8 @@ def winglike_solid(wing, bodies=(), n_chord=49, n_span=25, n_cap=5):
     f = np.unique(np.concatenate([wing.x_over_c / 100.0, 0.5 * (1.0 - np.cos(
         np.linspace(0.0, np.pi, max(int(n_chord), 2))))]))
     dense = _dense_copy(wing, f)
-    box = _wing_box(wing)
-    near = [b for b in bodies if _boxes_overlap(box, _body_box(b))]
+    box = wing_box(wing)
+    near = [b for b in bodies if boxes_overlap(box, body_box(b))]
     grid = _span_grid(wing.span_stations, int(n_span))
     e_span, e_thick = np.eye(3)[wing.span_axis], np.eye(3)[wing.thickness_axis]
     names = ("upper", "lower") if wing.span_axis == 1 else ("outboard", "inboard")
@@ -304,6 +304,46 @@ def capture_tube(body, n_theta=48):
     tube = CircularBody(f"{body.name} capture", [body.x[0], body.x[-1]],
                         [body.radius[0]] * 2, origin=body.origin, axial="linear")
     return {k: v[::-1] for k, v in body_solid(tube, n_theta, 2).items()}
+
+
+def held_base_solids(cfg, x_far, n_theta=48):
+    """Closed prisms of each open base's section from the base to ``x_far``, both halves.
+
+    The Harris program holds the area of an open base behind it
+    (:func:`juncture.analysis._components.held_bases`); cut together with
+    :func:`closed_networks`, each prism adds the part of the base section that a Mach plane
+    has passed, so an equivalent body ends with the base area. The prism's front face is the
+    body's base disc reversed (their cuts cancel), its side continues the body's last
+    polygon (the same ``n_theta``), and ``x_far`` must lie behind every plane that is cut.
+
+    Parameters
+    ----------
+    cfg : Configuration
+    x_far : float
+        Where the prisms end [deck length].
+    n_theta : int
+        Polygon sides, as for :func:`closed_networks`.
+
+    Returns
+    -------
+    dict of str to (n_lines, n_points, 3) float
+        ``"<body> held base"`` (side), ``"... front"``, ``"... end"``, and their images.
+    """
+    out = {}
+    for body, x_end, _ in held_bases(cfg):
+        xe = np.array([np.nextafter(x_end, -np.inf)])
+        ring = _rings(body, np.array([x_end]), xe, int(n_theta))[0]
+        centre = np.broadcast_to(ring.mean(axis=0) if isinstance(body, ArbitraryBody)
+                                 else _centre(body, x_end), ring.shape)
+        far = ring + np.array([max(float(x_far) - x_end, 0.0), 0.0, 0.0])
+        name = f"{body.name} held base"
+        nets = {name: np.stack([ring, far]),
+                f"{name} front": oriented(np.stack([ring, centre]), [-1.0, 0.0, 0.0]),
+                f"{name} end": oriented(np.stack([far, centre + far - ring]), [1.0, 0.0, 0.0])}
+        out.update(nets)
+        if cfg.symmetric and body.mirrored:
+            out.update({f"{k} image": _mirror(v) for k, v in nets.items()})
+    return out
 
 
 def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,

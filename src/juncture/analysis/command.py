@@ -9,8 +9,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import JunctureError
-from .areas import default_stations, mach_plane_area_distribution, normal_area_distribution
-from .wavedrag import eminton_lord, far_field_drag
+from ._components import held_base_area, is_y_symmetric
+from .areas import default_stations, normal_area_distribution
+from .machplanes import _mach_plane_cuts
+from .wavedrag import _rule_name, eminton_lord, far_field_drag, roll_angles
 
 __all__ = ["wavedrag", "fillet_areas"]
 
@@ -45,20 +47,64 @@ def _fillet_normal(geo, x):
     return sides * np.interp(x, xf, af, left=0.0, right=0.0)
 
 
+def _region(corner, curve):
+    """|area| and (y, z) centroid of the polygon corner + fillet curve, per station."""
+    poly = np.concatenate([corner[:, None, :], curve], axis=1)
+    y, z = poly[..., 1], poly[..., 2]
+    yn, zn = np.roll(y, -1, axis=1), np.roll(z, -1, axis=1)
+    cr = y * zn - yn * z
+    area = 0.5 * cr.sum(axis=1)
+    ok = np.abs(area) > 0.0
+    safe = np.where(ok, 6.0 * area, 1.0)
+    cy = np.where(ok, ((y + yn) * cr).sum(axis=1) / safe, curve[..., 1].mean(axis=1))
+    cz = np.where(ok, ((z + zn) * cr).sum(axis=1) / safe, curve[..., 2].mean(axis=1))
+    return np.abs(area), cy, cz
+
+
+def _fillet_parts(geo):
+    """The upper and lower fillets' shares of each station's area and their centroids.
+
+    Each fillet's cross-section is the region between its curve (body to wing) and the
+    corner where the wing meets the body (the wing/body intersection line, interpolated to
+    the station); the station's added area is split in the ratio of those regions' areas.
+    Returns ``[(area (m,), y_c (m,), z_c (m,)) for upper, lower]``, stations sorted in x.
+    """
+    xf, af, _, _, _ = fillet_areas(geo)
+    order = np.argsort(np.asarray(geo.stations["x"], float))
+    regions = []
+    for side in ("upper", "lower"):
+        curve = np.asarray(geo.fillets[f"fillet {side}"], float)[order]
+        inter = next((np.asarray(v, float) for k, v in geo.intersections.items()
+                      if k.endswith(f" {side}")), None)
+        if inter is None or len(inter) < 2:
+            regions.append((np.ones(xf.size), curve[..., 1].mean(axis=1),
+                            curve[..., 2].mean(axis=1)))
+            continue
+        o = np.argsort(inter[:, 0])
+        xs = curve[..., 0].mean(axis=1)
+        corner = np.stack([xs] + [np.interp(xs, inter[o, 0], inter[o, k]) for k in (1, 2)], -1)
+        regions.append(_region(corner, curve))
+    total = regions[0][0] + regions[1][0]
+    share = np.where(total > 0.0, regions[0][0] / np.where(total > 0.0, total, 1.0), 0.5)
+    return [(af * share, *regions[0][1:]), (af * (1.0 - share), *regions[1][1:])]
+
+
 def _fillet_mach(geo, x_cuts, thetas, mach):
-    """Fillet area in each Mach-plane cut: each side's station areas moved to its own X."""
-    xf, af, yc, zc, sides = fillet_areas(geo)
+    """Fillet area in each Mach-plane cut: each fillet's (upper, lower; each side of the
+    airplane) station areas moved to the X of its own centroid."""
+    xf, _, _, _, sides = fillet_areas(geo)
     beta = np.sqrt(mach * mach - 1.0)
     out = np.zeros(np.shape(x_cuts))
     for k, th in enumerate(thetas):
         for side in ((1.0, -1.0) if sides == 2 else (1.0,)):
-            xs = xf - beta * (side * yc * np.cos(th) + zc * np.sin(th))
-            o = np.argsort(xs)
-            out[k] += np.interp(x_cuts[k], xs[o], af[o], left=0.0, right=0.0)
+            for af, yc, zc in _fillet_parts(geo):
+                xs = xf - beta * (side * yc * np.cos(th) + zc * np.sin(th))
+                o = np.argsort(xs)
+                out[k] += np.interp(x_cuts[k], xs[o], af[o], left=0.0, right=0.0)
     return out
 
 
-def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None):
+def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None):
     """Area distribution and supersonic wave drag of a configuration (both halves).
 
     Parameters
@@ -67,29 +113,38 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None):
         The airplane; a Configuration's ``reference_area`` (the deck's REFA) gives ``CD``.
     mach : float, optional
         Free-stream Mach number >= 1. Without it: slender-body drag of the normal-area
-        distribution. With it: far-field drag averaged over ``n_theta`` roll angles.
+        distribution. With it: far-field drag averaged over roll angles.
     n_x : int
         Stations of the normal-area distribution (equally spaced over the configuration's
         length) and cuts per roll angle.
     n_theta : int
-        Roll angles of the far-field average (equally spaced over a full turn).
+        Roll-angle intervals per half turn (the Harris program's NTHETA): a configuration
+        symmetric about y = 0 is cut at ``n_theta + 1`` angles over a half turn and averaged
+        with Boole's rule (:func:`juncture.analysis.wavedrag.roll_angles`), any other at
+        ``2 n_theta`` angles over the full turn (the same spacing).
     geometry : Geometry or mapping of str to (n_lines, n_points, 3) float, optional
         A geometry from :func:`juncture.complete` (with its ``configuration`` and fillet
         ``stations``): areas are then those of its model (the re-designed fuselage, the wing
         trimmed at it) plus the fillets' added area, interpolated linearly between the
-        fillet stations; in a Mach-plane cut each side's fillet area is moved to the X of
-        its own centroid (the fillet lies close to the body, so this is the thin-fillet
-        limit). Any other geometry: closed, outward networks cut instead of the model.
+        fillet stations; in a Mach-plane cut the upper and lower fillets' shares of it are
+        moved to the X of their own centroids (the fillets lie close to the body, so this is
+        the thin-fillet limit). Any other geometry: closed, outward networks cut instead of
+        the model.
+    half_turn : bool, optional
+        Override the symmetry test (:func:`juncture.analysis._components.is_y_symmetric`;
+        a Geometry without its model counts as not symmetric).
 
     Returns
     -------
     dict
         ``"mach"`` (float or None), ``"D_over_q"`` [deck length^2], ``"CD"`` (``D_over_q /
         reference_area``, None without a reference area), ``"reference_area"``,
-        ``"method"``, ``"x"`` and ``"area"`` (the normal-area distribution, lists),
-        ``"components"`` (name -> list of areas; model only), and with a Mach number
-        ``"thetas"``, ``"D_over_q_theta"``, ``"x_cuts"`` and ``"cut_areas"``
-        ((n_theta, n_x) nested lists).
+        ``"method"``, ``"x"`` and ``"area"`` (the normal-area distribution, lists; with a
+        Mach number those of the networks that were cut, to their faceting, or the model's
+        at M = 1), ``"components"`` (name -> list of areas, with ``"held bases"``; slender
+        body from a model only, else empty), and with a Mach number ``"thetas"``,
+        ``"theta_weights"``, ``"D_over_q_theta"``, ``"x_cuts"`` and ``"cut_areas"``
+        ((n, n_x) nested lists).
 
     Raises
     ------
@@ -101,9 +156,12 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None):
     Notes
     -----
     Slender body: the Eminton-Lord least-drag curve through the station areas
-    (:func:`juncture.analysis.wavedrag.eminton_lord`). Far field (Harris, NASA TM X-947):
-    the mean over roll angles of the Eminton-Lord drag of each Mach-plane equivalent body
-    (:func:`juncture.analysis.wavedrag.far_field_drag`).
+    (:func:`juncture.analysis.wavedrag.eminton_lord`), with the area of each open base held
+    behind it. Far field (Harris, NASA TM X-947): the roll-angle average of the Eminton-Lord
+    drag of each Mach-plane equivalent body
+    (:func:`juncture.analysis.machplanes.mach_plane_area_distribution`,
+    :func:`juncture.analysis.wavedrag.far_field_drag`). Only what the result needs is
+    computed: with a Mach number the model's normal areas are not integrated.
     """
     n_x, n_theta = int(n_x), int(n_theta)
     if n_x < 3:
@@ -119,21 +177,27 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None):
         from ..geometry import Geometry
 
         source = Geometry(networks=source)
-    x = default_stations(source, n_x)
-    normal = dict(normal_area_distribution(source, x))
-    if completed and geometry.fillets:
-        normal["fillet"] = _fillet_normal(geometry, x)
-        normal["total"] = np.asarray(normal["total"], float) + normal["fillet"]
+    model = hasattr(source, "components")
+    fillets = completed and bool(geometry.fillets)
     ref = getattr(cfg, "reference_area", None)
     ref = float(ref) if ref else None
-    out = {"mach": None if mach is None else float(mach), "reference_area": ref,
-           "x": _floats(x), "area": _floats(normal["total"]),
-           "components": {k: _floats(v) for k, v in normal.items() if k not in ("x", "total")}}
+    out = {"mach": None if mach is None else float(mach), "reference_area": ref}
+    x = default_stations(source, n_x)
     if mach is None:
+        normal = dict(normal_area_distribution(source, x))
+        if model:
+            normal["held bases"] = held_base_area(source, x)
+            normal["total"] = normal["total"] + normal["held bases"]
+        if fillets:
+            normal["fillet"] = _fillet_normal(geometry, x)
+            normal["total"] = np.asarray(normal["total"], float) + normal["fillet"]
         area = np.asarray(normal["total"], dtype=float).copy()
         area[np.abs(area) <= 1e-12 * max(float(np.max(np.abs(area))), 1e-300)] = 0.0
         body = eminton_lord(x, area)
-        out.update(method="slender-body (Eminton-Lord)", D_over_q=float(body.d_over_q))
+        out.update(method="slender-body (Eminton-Lord)", D_over_q=float(body.d_over_q),
+                   x=_floats(x), area=_floats(normal["total"]),
+                   components={k: _floats(v) for k, v in normal.items()
+                               if k not in ("x", "total")})
     else:
         mach = float(mach)
         if not (np.isfinite(mach) and mach >= 1.0):
@@ -141,15 +205,25 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None):
                                 f"{mach}")
         if n_theta < 1:
             raise JunctureError(f"n_theta must be at least 1, found {n_theta}")
-        cuts = dict(mach_plane_area_distribution(source, mach, n_x=n_x, n_theta=n_theta))
-        if completed and geometry.fillets:
-            cuts["area"] = np.asarray(cuts["area"], float) + _fillet_mach(
-                geometry, np.asarray(cuts["x"], float), cuts["thetas"], mach)
-        ff = far_field_drag(cuts["area"], cuts["x"], cuts["thetas"])
-        out.update(method=f"far-field (Harris), {n_theta} roll angles",
-                   D_over_q=float(ff.d_over_q), thetas=_floats(cuts["thetas"]),
+        half = (model and is_y_symmetric(source)) if half_turn is None else bool(half_turn)
+        count = n_theta if half else 2 * n_theta
+        thetas, weights = roll_angles(count, half)
+        x_cuts, cut_areas, mesh = _mach_plane_cuts(source, mach, n_x, thetas)
+        if mesh is None:  # M = 1 from the model: the cuts are the normal areas
+            x, area = x_cuts[0], cut_areas[0].copy()
+        else:  # the same triangles cut by the planes x = const
+            area = mesh.cut(mesh.heights(np.array([1.0, 0.0, 0.0])), x)
+            area = area + (held_base_area(source, x) if model else 0.0)
+        if fillets:
+            cut_areas = cut_areas + _fillet_mach(geometry, x_cuts, thetas, mach)
+            area = area + _fillet_normal(geometry, x)
+        ff = far_field_drag(cut_areas, x_cuts, thetas, weights=weights)
+        span = "a half turn" if half else "the full turn"
+        out.update(method=f"far-field (Harris), NTHETA {n_theta}: {thetas.size} roll angles "
+                          f"over {span}, {_rule_name(count, half)} rule",
+                   D_over_q=float(ff.d_over_q), x=_floats(x), area=_floats(area),
+                   components={}, thetas=_floats(thetas), theta_weights=_floats(weights),
                    D_over_q_theta=_floats(ff.d_over_q_theta),
-                   x_cuts=np.asarray(cuts["x"]).tolist(),
-                   cut_areas=np.asarray(cuts["area"]).tolist())
+                   x_cuts=np.asarray(x_cuts).tolist(), cut_areas=np.asarray(cut_areas).tolist())
     out["CD"] = None if ref is None else out["D_over_q"] / ref
     return out

@@ -113,11 +113,11 @@ def _straddling_pairs(dmin, dmax, c_sorted):
 def _segment_areas(d_tri, y_tri, z_tri, c):
     """(1/2)(y1 z2 - y2 z1) of the cut segment of each (triangle, plane) pair.
 
-    ``d_tri``, ``y_tri``, ``z_tri`` (k, 3): vertex heights and coordinates; ``c`` (k,) offsets.
+    ``d_tri``, ``y_tri``, ``z_tri`` (3, k): vertex heights and coordinates; ``c`` (k,) offsets.
     The three edges are handled one after the other (a loop of 3, over whole arrays: numpy
     reductions along a length-3 axis are slow).
     """
-    h = [d_tri[:, v] - c for v in range(3)]
+    h = [d_tri[v] - c for v in range(3)]
     ahead = [hv >= 0.0 for hv in h]
     y1 = np.zeros(c.size)
     z1, y2, z2 = y1.copy(), y1.copy(), y1.copy()
@@ -127,8 +127,8 @@ def _segment_areas(d_tri, y_tri, z_tri, c):
         up = ~ahead[a] & ahead[b]  # behind -> ahead: the segment ends here
         cross = down | up
         frac = np.where(cross, h[a] / np.where(cross, h[a] - h[b], 1.0), 0.0)
-        yc = y_tri[:, a] + frac * (y_tri[:, b] - y_tri[:, a])
-        zc = z_tri[:, a] + frac * (z_tri[:, b] - z_tri[:, a])
+        yc = y_tri[a] + frac * (y_tri[b] - y_tri[a])
+        zc = z_tri[a] + frac * (z_tri[b] - z_tri[a])
         y1 += np.where(down, yc, 0.0)
         z1 += np.where(down, zc, 0.0)
         y2 += np.where(up, yc, 0.0)
@@ -136,44 +136,66 @@ def _segment_areas(d_tri, y_tri, z_tri, c):
     return 0.5 * (y1 * z2 - y2 * z1)
 
 
-def _cut_family(tri, normal, offsets, yz0):
-    """Signed projected areas for the planes ``normal . p = offsets`` (one normal)."""
-    d = tri @ normal  # (n_tri, 3) vertex heights
-    order = np.argsort(offsets, kind="stable")
-    c_sorted = offsets[order]
-    dmin = np.minimum(np.minimum(d[:, 0], d[:, 1]), d[:, 2])
-    dmax = np.maximum(np.maximum(d[:, 0], d[:, 1]), d[:, 2])
-    lo, count = _straddling_pairs(dmin, dmax, c_sorted)
-    y, z = tri[:, :, 1] - yz0[0], tri[:, :, 2] - yz0[1]
-    sel = np.flatnonzero(count)
-    acc = np.zeros(offsets.size)
-    if sel.size == 0:
-        return acc
-    lo, count = lo[sel], count[sel]
-    ends = np.cumsum(count)
-    # chunks of triangles holding about _CHUNK (triangle, plane) pairs each
-    bounds = np.searchsorted(ends, np.arange(_CHUNK, ends[-1], _CHUNK), side="left")
-    for ta, tb in zip(np.r_[0, bounds], np.r_[bounds, sel.size], strict=True):
-        if tb <= ta:
-            continue
-        cnt = count[ta:tb]
-        first = np.cumsum(cnt) - cnt
-        it = np.repeat(np.arange(ta, tb), cnt)  # index into sel
-        ip = lo[it] + (np.arange(it.size) - np.repeat(first, cnt))  # sorted plane index
-        t_idx = sel[it]
-        seg = _segment_areas(d[t_idx], y[t_idx], z[t_idx], c_sorted[ip])
-        acc += np.bincount(ip, weights=seg, minlength=offsets.size)
-    out = np.empty(offsets.size)
-    out[order] = acc
-    return out
+class _Mesh:
+    """Triangles as three (3, n) arrays x, y, z (vertex k of every triangle contiguous), so
+    that the vertex heights of a plane family are three whole-array operations; ``yz0`` is
+    the point about which the areas are summed (the mean vertex of the first mesh)."""
+
+    __slots__ = ("x", "y", "z", "yz0")
+
+    def __init__(self, tri, yz0=None):
+        self.x, self.y, self.z = (np.ascontiguousarray(tri[:, :, k].T) for k in range(3))
+        self.yz0 = (np.array([self.y.mean(), self.z.mean()]) if yz0 is None
+                    else np.asarray(yz0, float))
+
+    def heights(self, normal):
+        """(3, n) ``normal . p`` of every vertex."""
+        return normal[0] * self.x + normal[1] * self.y + normal[2] * self.z
+
+    def joined(self, other):
+        """This mesh and ``other``'s triangles, summed about this mesh's ``yz0``."""
+        out = object.__new__(_Mesh)
+        for k in ("x", "y", "z"):
+            setattr(out, k, np.concatenate([getattr(self, k), getattr(other, k)], axis=1))
+        out.yz0 = self.yz0
+        return out
+
+    def cut(self, d, offsets):
+        """Signed projected areas of the planes ``d = offsets`` (``d`` from :meth:`heights`)."""
+        order = np.argsort(offsets, kind="stable")
+        c_sorted = offsets[order]
+        dmin = np.minimum(np.minimum(d[0], d[1]), d[2])
+        dmax = np.maximum(np.maximum(d[0], d[1]), d[2])
+        lo, count = _straddling_pairs(dmin, dmax, c_sorted)
+        sel = np.flatnonzero(count)
+        acc = np.zeros(offsets.size)
+        if sel.size == 0:
+            return acc
+        lo, count = lo[sel], count[sel]
+        ends = np.cumsum(count)
+        # chunks of triangles holding about _CHUNK (triangle, plane) pairs each
+        bounds = np.searchsorted(ends, np.arange(_CHUNK, ends[-1], _CHUNK), side="left")
+        for ta, tb in zip(np.r_[0, bounds], np.r_[bounds, sel.size], strict=True):
+            if tb <= ta:
+                continue
+            cnt = count[ta:tb]
+            first = np.cumsum(cnt) - cnt
+            it = np.repeat(np.arange(ta, tb), cnt)  # index into sel
+            ip = lo[it] + (np.arange(it.size) - np.repeat(first, cnt))  # sorted plane index
+            t_idx = sel[it]
+            seg = _segment_areas(d[:, t_idx], self.y[:, t_idx] - self.yz0[0],
+                                 self.z[:, t_idx] - self.yz0[1], c_sorted[ip])
+            acc += np.bincount(ip, weights=seg, minlength=offsets.size)
+        out = np.empty(offsets.size)
+        out[order] = acc
+        return out
 
 
 def _prepare(networks):
     tri = triangulate(networks)
     if tri.shape[0] == 0:
         raise GeometryError("the networks have no triangle of nonzero area")
-    yz0 = tri[:, :, 1:].reshape(-1, 2).mean(axis=0)
-    return tri, yz0
+    return _Mesh(tri)
 
 
 def _offsets(values, name):
@@ -228,8 +250,8 @@ def plane_cut_areas(networks, normal, offsets):
     if n.shape != (3,) or not np.all(np.isfinite(n)) or not np.any(n != 0.0):
         raise JunctureError(f"normal must be a finite nonzero (3,) vector, found {normal!r}")
     c = _offsets(offsets, "offsets")
-    tri, yz0 = _prepare(networks)
-    return np.sign(n[0]) * _cut_family(tri, n, c, yz0)
+    mesh = _prepare(networks)
+    return np.sign(n[0]) * mesh.cut(mesh.heights(n), c)
 
 
 def normal_areas(networks, x):
@@ -295,8 +317,8 @@ def mach_plane_areas(networks, mach, thetas, x_offsets):
     if xo.ndim != 2 or xo.shape[0] != normals.shape[0] or not np.all(np.isfinite(xo)):
         raise JunctureError(f"x_offsets must be finite, (n_X,) or (n_theta, n_X) with n_theta = "
                             f"{normals.shape[0]}, found shape {np.shape(x_offsets)}")
-    tri, yz0 = _prepare(networks)
-    return np.stack([_cut_family(tri, nk, xk, yz0) for nk, xk in zip(normals, xo, strict=True)])
+    mesh = _prepare(networks)
+    return np.stack([mesh.cut(mesh.heights(nk), xk) for nk, xk in zip(normals, xo, strict=True)])
 
 
 def mach_plane_extents(networks, mach, thetas):

@@ -192,7 +192,8 @@ def build_parser(version):
     s.add_argument("--n-x", type=_count(11, 100_000, "a number of stations"), default=101,
                    help="stations / cuts per angle (default 101)")
     s.add_argument("--n-theta", type=_count(1, 3600, "a number of roll angles"), default=16,
-                   help="roll angles (default 16)")
+                   help="Harris NTHETA: roll-angle intervals per half turn of a symmetric "
+                   "airplane, full turn otherwise (default 16)")
     _units(s)
 
     s = sub.add_parser("blend", parents=[common],

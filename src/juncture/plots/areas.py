@@ -44,14 +44,17 @@ def _cuts(res):
         return None
     if xc.ndim != 2 or xc.shape != ac.shape or th.shape != (xc.shape[0],) or xc.size == 0:
         return None
-    return xc, ac, th
+    w = np.asarray(res.get("theta_weights", np.ones(th.size)), float)
+    w = w / w.sum() if w.shape == th.shape and w.sum() > 0 else np.full(th.size, 1 / th.size)
+    return xc, ac, th, w
 
 
-def _mean_cut(xc, ac):
-    """The Mach-plane areas on one grid of X: (X (n,), mean, min, max over roll angles)."""
+def _mean_cut(xc, ac, th, w):
+    """The Mach-plane areas on one grid of X: (X (n,), the drag's own weighted mean over roll
+    angles, min, max)."""
     grid = np.linspace(xc.min(), xc.max(), xc.shape[1])
     rows = np.stack([np.interp(grid, x, a, left=0.0, right=0.0) for x, a in zip(xc, ac)])
-    return grid, rows.mean(axis=0), rows.min(axis=0), rows.max(axis=0)
+    return grid, w @ rows, rows.min(axis=0), rows.max(axis=0)
 
 
 def _what(results, far):
@@ -64,8 +67,8 @@ def _what(results, far):
     else:
         head = f"{method}, Mach -> 1 (no Mach number given)"
     if far:
-        shown = ("Mach-plane areas, the drag's own: mean over roll angles (band: the first "
-                 "case's range)")
+        shown = ("Mach-plane areas, the drag's own: weighted mean over roll angles (band: the "
+                 "first case's range)")
     elif machs:
         shown = "shown: normal (Mach 1) areas; the results hold no Mach-plane cuts"
     else:
@@ -119,7 +122,7 @@ def plot_wavedrag_areas(results, title=None, units=DEFAULT_UNITS):
     colours = dict(zip(results, CASE_COLOURS * (len(results) // len(CASE_COLOURS) + 1)))
     for label, res in results.items():
         if far:
-            x, a, lo, hi = _mean_cut(*cuts[label][:2])
+            x, a, lo, hi = _mean_cut(*cuts[label])
         else:
             x, a = curves[label]
             lo = hi = None
@@ -156,7 +159,7 @@ def plot_wavedrag_areas(results, title=None, units=DEFAULT_UNITS):
 
 
 def _roll_panel(ax, results, cuts, units):
-    """D/q of each roll angle's equivalent body (their mean is the far-field D/q)."""
+    """D/q of each roll angle's equivalent body (their weighted mean is the far-field D/q)."""
     for label, res in results.items():
         th = np.degrees(cuts[label][2])
         dq = res.get("D_over_q_theta")
@@ -164,9 +167,12 @@ def _roll_panel(ax, results, cuts, units):
             ax.plot(th, dq, "o-", ms=3, lw=1.1, label=label, color=CASE_COLOURS[
                 list(results).index(label) % len(CASE_COLOURS)])
     ax.set_xlabel("roll angle theta [deg]")
-    ax.set_xticks(np.arange(0, 361, 45))
+    lo, hi = (np.degrees(min(c[2].min() for c in cuts.values())),
+              np.degrees(max(c[2].max() for c in cuts.values())))
+    ax.set_xticks(np.arange(np.floor(lo / 45) * 45, hi + 1, 45))
     ax.set_ylabel(axis_label("D/q", units, 2))
-    ax.set_title("drag of each roll angle's equivalent body (their mean is the D/q above)",
+    ax.set_title("drag of each roll angle's equivalent body (their weighted mean, the "
+                 "integration rule's, is the D/q above)",
                  fontsize=9)
     ax.grid(True, **GRID)
     ax.set_label("roll angles")
