@@ -326,9 +326,6 @@ def test_slow_intersections_in_a_gap_between_segments_lie_on_the_straight_bridge
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=False, reason="issue 11: at a repeated joint station whose two "
-                   "arbitrary sections differ, the jump is taken for an intersection "
-                   "(residual logged, point kept)")
 @settings(max_examples=300, **SLOW)
 @given(decks(section="arbitrary", joints="repeated"))
 def test_slow_no_intersection_is_a_jump_at_a_joint_step(example):
