@@ -26,6 +26,7 @@ from hypothesis import HealthCheck, Phase, given, settings
 import juncture as jc
 from tests.deckgen import (
     FAMILIES,
+    components_differ,
     decks,
     intersection_offsets,
     references,
@@ -57,29 +58,6 @@ def complete_or_refuse(cfg, **kwargs):
             return jc.complete(cfg, **kwargs)
         except jc.JunctureError:
             return None
-
-
-def components_differ(a, b):
-    """'' if two configurations hold the same components field by field, else what differs."""
-    if set(a.components) != set(b.components):
-        return f"component names {sorted(a.components)} != {sorted(b.components)}"
-    for name in a.components:
-        ca, cb = a[name], b[name]
-        if type(ca) is not type(cb):
-            return f"{name}: {type(ca).__name__} != {type(cb).__name__}"
-        for field in ca.__dataclass_fields__:
-            if field.startswith("_"):
-                continue
-            va, vb = getattr(ca, field), getattr(cb, field)
-            if isinstance(va, tuple) and va and isinstance(va[0], np.ndarray):
-                same = len(va) == len(vb) and all(np.array_equal(p, q) for p, q in zip(va, vb))
-            elif isinstance(va, np.ndarray) or isinstance(vb, np.ndarray):
-                same = np.shape(va) == np.shape(vb) and np.array_equal(va, vb)
-            else:
-                same = va == vb
-            if not same:
-                return f"{name}.{field}: {va!r} != {vb!r}"
-    return ""
 
 
 def assert_reads_as_drawn(text, desc):

@@ -105,31 +105,6 @@ def crash_location(exc):
     return f"{path}:{f.lineno} in {f.name}"
 
 
-def _same_components(a, b):
-    """Names of components that differ between two configurations ('' if none)."""
-    import numpy as np
-
-    if set(a.components) != set(b.components):
-        return f"names {sorted(a.components)} != {sorted(b.components)}"
-    for name in a.components:
-        ca, cb = a[name], b[name]
-        if type(ca) is not type(cb):
-            return f"{name}: type"
-        for field in ca.__dataclass_fields__:
-            if field.startswith("_"):
-                continue
-            va, vb = getattr(ca, field), getattr(cb, field)
-            if isinstance(va, tuple) and va and isinstance(va[0], np.ndarray):
-                same = len(va) == len(vb) and all(np.array_equal(p, q) for p, q in zip(va, vb))
-            elif isinstance(va, np.ndarray) or isinstance(vb, np.ndarray):
-                same = np.shape(va) == np.shape(vb) and np.array_equal(va, vb)
-            else:
-                same = va == vb
-            if not same:
-                return f"{name}: {field}"
-    return ""
-
-
 def _role(description, name):
     comp = description["components"][name]
     if comp["kind"] == "fin":
@@ -226,7 +201,9 @@ def survey_deck(job):
                      "message": str(exc), "traceback": traceback.format_exc()}]
         try:
             jc.write(cfg, Path(tmp) / "again.inp")
-            diff = _same_components(cfg, jc.read(Path(tmp) / "again.inp"))
+            from tests.deckgen import components_differ
+
+            diff = components_differ(cfg, jc.read(Path(tmp) / "again.inp"))
         except Exception as exc:
             diff = f"{type(exc).__name__}: {message_class(exc)}"
         if diff:

@@ -56,6 +56,7 @@ from .references import (
     ArbitraryBodyRef,
     CircularBodyRef,
     WingLikeRef,
+    components_differ,
     fillet_depths,
     intersection_offsets,
     public_description,
@@ -63,6 +64,7 @@ from .references import (
 )
 
 __all__ = [
+    "components_differ",
     "FAMILIES",
     "decks",
     "deck_from_seed",

@@ -391,3 +391,26 @@ def fillet_depths(geo, description):
 def public_description(description):
     """The description without the card numbers (for printing and JSON files)."""
     return {k: v for k, v in description.items() if k != "components"}
+
+
+def components_differ(a, b):
+    """'' if two configurations hold the same components field by field, else what differs."""
+    if set(a.components) != set(b.components):
+        return f"component names {sorted(a.components)} != {sorted(b.components)}"
+    for name in a.components:
+        ca, cb = a[name], b[name]
+        if type(ca) is not type(cb):
+            return f"{name}: {type(ca).__name__} != {type(cb).__name__}"
+        for field in ca.__dataclass_fields__:
+            if field.startswith("_"):
+                continue
+            va, vb = getattr(ca, field), getattr(cb, field)
+            if isinstance(va, tuple) and va and isinstance(va[0], np.ndarray):
+                same = len(va) == len(vb) and all(np.array_equal(p, q) for p, q in zip(va, vb))
+            elif isinstance(va, np.ndarray) or isinstance(vb, np.ndarray):
+                same = np.shape(va) == np.shape(vb) and np.array_equal(va, vb)
+            else:
+                same = va == vb
+            if not same:
+                return f"{name}.{field}: {va!r} != {vb!r}"
+    return ""
