@@ -349,6 +349,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                                    skip={(wing.name, body0.name)})
         first = make(body0)
         comp = _keep_area(body0, make, tolerance=opts.tolerance, sides=sides,
+                          compensate=opts.compensation,
                           exposure=_root_exposure(cfg, wing, body0, sides, known, first[:2]),
                           initial=first)
         body = comp.body

@@ -55,6 +55,7 @@ _RULES = {
                "None, 4, 6 or 'split'"),
     "single_network": (lambda v: isinstance(v, bool), "True or False"),
     "tolerance": (lambda v: _number(v, 0.0, 1.0), "a relative tolerance in (0, 1)"),
+    "compensation": (lambda v: v in ("section", "fillet"), "one of 'section', 'fillet'"),
     "wing": (lambda v: isinstance(v, str) and v != "", "a component name"),
     "body": (lambda v: isinstance(v, str) and v != "", "a component name"),
     "pairs": (lambda v: isinstance(v, tuple), "a tuple of (a, b, role)"),
@@ -105,6 +106,9 @@ def check_combination(fillet, keep_area, opts, given=()):
                               f"no value unless fillet={kind!r} (fillet is {fillet!r})")
     if "blend_length" in set_ and fillet is None:
         raise OptionError("blend_length", opts.blend_length, "no value without a fillet")
+    if ("compensation" in set_ or opts.compensation != "section") and not keep_area:
+        raise OptionError("compensation", opts.compensation,
+                          "no value unless keep_area=True (there is nothing to compensate)")
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,6 +147,11 @@ class CompleteOptions:
         points' x (TM-4406 fig 4) and points redistributed around the wing (fig 5).
     tolerance : float
         Relative area tolerance of the keep-area iteration.
+    compensation : {"section", "fillet"}
+        With ``keep_area``, what the re-designed fuselage gives up: the fillets' area and the
+        wing root its shrinking uncovers, so the whole cross-section keeps its original area
+        ("section"), or the fillets' area alone, as TM-4406 does (eqs 11-14: fuselage area +
+        fillet area = original fuselage area; "fillet").
     wing, body : str
         Names of the wing and fuselage components.
     pairs : tuple of (a, b, role)
@@ -172,6 +181,7 @@ class CompleteOptions:
     blocks: object = None
     single_network: bool = False
     tolerance: float = 1e-9
+    compensation: str = "section"
     wing: str = "wing"
     body: str = "body"
     pairs: tuple = ()

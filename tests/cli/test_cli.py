@@ -133,7 +133,37 @@ def test_complete_on_the_pdas_deck_without_fillet(tmp_path):
         geo.networks)
 
 
-def test_complete_reports_an_impossible_fillet_as_exit_2(tmp_path, capsys):
+def test_a_fillet_too_large_for_the_wing_root_is_reduced_and_the_area_kept(tmp_path, capsys):
+    """The end point 90 % of the way to section 2 once made the fillet add more area than
+    the body had; the start angle is now reduced where the fillet would not fit."""
+    import json
+
     assert main(["complete", str(PDAS_DECK), "-o", str(tmp_path), "--fillet", "cubic",
-                 "--keep-area", "--end", "intersection", "--end-value", "0.9"]) == 2
-    assert "adds more area" in capsys.readouterr().err
+                 "--keep-area", "--end", "intersection", "--end-value", "0.9"]) == 0
+    st = json.loads((tmp_path / "summary.json").read_text())["stations"]
+    assert max(st["residual"]) < 1e-8
+    assert all(b <= o * (1 + 1e-12) for b, o in zip(st["area_body"], st["area_original"]))
+
+
+@pytest.mark.parametrize("mode", ["section", "fillet"])
+def test_compensate_chooses_what_the_redesigned_body_gives_up(tmp_path, mode):
+    """--compensate fillet keeps body + fillet at the original area (TM-4406 eq 14);
+    section also gives up the wing root the shrinking uncovers, so it removes more."""
+    import json
+
+    assert main(["complete", str(PDAS_DECK), "-o", str(tmp_path / mode), "--fillet", "cubic",
+                 "--keep-area", "--compensate", mode, "-q"]) == 0
+    st = json.loads((tmp_path / mode / "summary.json").read_text())["stations"]
+    body, fillet, orig = (np.array(st[k]) for k in ("area_body", "area_fillet_only",
+                                                    "area_original"))
+    gap = orig - body - fillet
+    if mode == "fillet":
+        assert np.max(np.abs(gap)) < 1e-6 * orig.max()
+    else:
+        assert np.min(gap) > -1e-6 * orig.max() and np.max(gap) > 1e-3 * orig.max()
+
+
+def test_compensate_without_keep_area_is_a_usage_error(tmp_path, capsys):
+    assert main(["complete", str(PDAS_DECK), "-o", str(tmp_path), "--fillet", "cubic",
+                 "--compensate", "fillet"]) == 2
+    assert "--compensate: only with --keep-area" in capsys.readouterr().err

@@ -89,6 +89,8 @@ def _complete_options(args, fillet):
         check_combination(fillet, args.keep_area, opts, given=fields)
     except OptionError as exc:
         flag = flag_of.get(exc.option, exc.option)
+        if exc.option == "compensation":
+            fail("argument --compensate: only with --keep-area")
         if exc.option == "keep_area":
             fail("argument --keep-area: needs --fillet cubic or circular (without "
                  "a fillet there is no added area to compensate)")

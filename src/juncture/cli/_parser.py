@@ -21,7 +21,8 @@ COMPLETE_FLAGS = {"theta_u": ("theta_u_deg", "--theta-u"), "end": ("end", "--end
                   "blend_length": ("blend_length", "--blend-length"),
                   "radius": ("fillet_radius", "--radius"), "remedy": ("remedy", "--remedy"),
                   "blocks": ("blocks", "--blocks"),
-                  "single_network": ("single_network", "--single-network")}
+                  "single_network": ("single_network", "--single-network"),
+                  "compensate": ("compensation", "--compensate")}
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -120,6 +121,10 @@ def _complete_parser(sub, common, extensions):
     s.add_argument("--keep-area", action="store_true",
                    help="shrink the fuselage so body + fillet keeps the original area "
                    "(needs --fillet)")
+    s.add_argument("--compensate", choices=("section", "fillet"),
+                   help="with --keep-area: keep the whole section's area (default: fillets "
+                   "and the wing root the shrinking uncovers) or, as TM-4406 eqs 11-14, only "
+                   "the fillets' area")
     s.add_argument("--format", nargs="+", default=["wgs"], metavar="EXT",
                    help=f"output formats by extension (default: wgs); one or more of "
                    f"{', '.join(extensions)}")

@@ -2,15 +2,17 @@
 
 from .area import (
     BodyReduction,
+    Compensate,
     Compensation,
     fillet_added_area,
     keep_area,
     polygon_disk_area,
     reduced_body,
+    wedge_area,
 )
 from .circular import circular_fillet
-from .cubic import FilletLines, blend_factor, cubic_fillet, hermite
+from .cubic import FilletLines, bezier, blend_factor, cubic_fillet, hermite
 
 __all__ = ["FilletLines", "cubic_fillet", "circular_fillet", "fillet_added_area", "keep_area",
            "BodyReduction", "reduced_body", "polygon_disk_area", "Compensation", "blend_factor",
-           "hermite"]
+           "hermite", "bezier", "wedge_area", "Compensate"]

@@ -3,30 +3,42 @@
 TM-4406 projects an upper fillet line and the corresponding lower one into the plane
 x = const, takes the polygon through five points of each (eq 11), and subtracts the wing root
 trapezoid (eq 12) and the circular segment of the body between the fillet start points
-(eq 13). Here the polygon holds *every* fillet point, and the two subtractions are done
-exactly: the added area is
+(eq 13). What is left is the two wedges each fillet fills: between the fillet line, the wing
+surface from its end point E back to the intersection I, and the body arc from I to the
+fillet's start B. Here each wedge is measured on its own, in the cross-section plane of its
+own intersection point (the upper and lower intersections of a swept wing lie at different
+x), and exactly:
 
-    A_net = area(F minus D) - area(W minus D)
+- a cubic fillet (its Bezier control points in ``FilletLines.control``, starting on the
+  body circle) by Green's theorem on the closed curve cubic B -> E, segment E -> I, arc
+  I -> B: A = 1/2 |integral of (y dz - z dy)|, the cubic's part by 3-point Gauss-Legendre
+  quadrature (exact for its degree-5 integrand), the arc's in closed form. The fillet lies
+  outside the body, so this is eqs 11-14 with the fillet itself instead of a polygon through
+  some of its points (9 points over-state the area by about 1.5 %);
+- any other line (circular arcs, the eq 10 blending whose first point lies inside the body,
+  degenerate lines) by the polygon of its points closed through I, less its part inside the
+  body's disk: the exact area of a polygon cut by a circle (a sum over edges of the signed
+  area of the disk within each edge's triangle with the centre).
 
-where F is the polygon (upper fillet line, wing end edge, lower fillet line reversed), W the
-wing quadrilateral (I_u, E_u, E_l, I_l) between the intersection and end points and D the
-body's disk at that station. Polygon-minus-disk areas come from the exact area of a polygon
-cut by a circle (a sum over edges of the signed area of the disk within each edge's triangle
-with the centre). When the fillet starts on the circle and the chord between the start points
-lies inside the body this is eqs 11-14 with all points; it stays right where the LE/TE blending
-pulls the start points off the circle.
+With a re-designed (smaller) body, the wing root the shrinking body uncovers is added on
+request: the part of the wing quadrilateral (I_u, E_u, E_l, I_l) between the original and
+the re-designed body circles.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 
 from ..errors import ConvergenceError, GeometryError
 
-__all__ = ["polygon_disk_area", "fillet_added_area", "reduced_body", "BodyReduction",
-           "keep_area", "Compensation"]
+__all__ = ["polygon_disk_area", "fillet_added_area", "wedge_area", "reduced_body",
+           "BodyReduction", "keep_area", "Compensation", "Compensate"]
+
+#: What the re-designed body gives up (:func:`keep_area`).
+Compensate = Literal["section", "fillet"]
 
 
 def _cross(u, v):
@@ -81,8 +93,81 @@ def _polygon_area(poly):
     return 0.5 * _cross(poly, q).sum(axis=1)
 
 
+_GAUSS_S = 0.5 + 0.5 * np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])
+_GAUSS_W = np.array([5.0, 8.0, 5.0]) / 18.0
+
+
+def _bezier_green(control):
+    """(m,) integral over s in [0, 1] of 1/2 (y z' - z y') of cubic Bezier curves (m, 4, 2)."""
+    c = np.asarray(control, float)
+    s = _GAUSS_S[None, :, None]
+    w = 1.0 - s
+    p = (w ** 3 * c[:, None, 0] + 3 * w * w * s * c[:, None, 1] + 3 * w * s * s * c[:, None, 2]
+         + s ** 3 * c[:, None, 3])
+    d = 3.0 * (w * w * (c[:, None, 1] - c[:, None, 0]) + 2 * w * s * (c[:, None, 2] - c[:, None, 1])
+               + s * s * (c[:, None, 3] - c[:, None, 2]))
+    return 0.5 * (_cross(p, d) * _GAUSS_W[None, :]).sum(axis=1)
+
+
+def _cubic_rows(lines):
+    """Rows of ``lines`` that are the cubic their ``control`` gives, sampled at equal s."""
+    ctrl = getattr(lines, "control", None)
+    m, k = lines.points.shape[:2]
+    if ctrl is None or k < 2:
+        return np.zeros(m, bool), None
+    from .cubic import bezier
+
+    ctrl = np.asarray(ctrl, float)
+    pts = bezier(np.nan_to_num(ctrl), np.linspace(0.0, 1.0, k))
+    size = np.abs(lines.points).max(axis=(1, 2)) + 1.0
+    same = np.abs(pts - lines.points).max(axis=(1, 2)) <= 1e-9 * size
+    return same & np.isfinite(ctrl).all(axis=(1, 2)), ctrl
+
+
+def wedge_area(body, lines, corner):
+    """Area each fillet line adds to its cross-section (TM-4406 eqs 11-14, one side).
+
+    Parameters
+    ----------
+    body : CircularBody
+    lines : FilletLines
+        Fillet lines, each from its start on the body to its end on the wing.
+    corner : (m, 3) float
+        The intersection point I of each line (where the sharp juncture was).
+
+    Returns
+    -------
+    (m,) float
+        The area between the fillet, the wing from E back to I and the body from I to the
+        start, in the plane x = x_I [deck length^2] (module docstring).
+    """
+    pts = np.asarray(lines.points, float)
+    corner = np.asarray(corner, float)
+    x = corner[:, 0]
+    ctr, r = body.section_at(x)
+    # Polygon of the points closed through I, less its part inside the disk.
+    poly = np.concatenate([pts[..., 1:], corner[:, None, 1:]], axis=1)
+    a_poly = _polygon_area(poly)
+    polygon = np.abs(a_poly - polygon_disk_area(poly, ctr, r))
+    cubic, ctrl = _cubic_rows(lines)
+    start = pts[:, 0]
+    on_circle = np.abs(np.hypot(start[:, 1] - ctr[:, 0], start[:, 2] - ctr[:, 1]) - r) <= \
+        1e-9 * np.maximum(r, 1.0)
+    exact = cubic & on_circle & np.isfinite(pts).all(axis=(1, 2))
+    if not exact.any():
+        return polygon
+    th_i = np.arctan2(corner[:, 2] - ctr[:, 1], corner[:, 1] - ctr[:, 0])
+    th_b = np.arctan2(start[:, 2] - ctr[:, 1], start[:, 1] - ctr[:, 0])
+    dth = (th_b - th_i + np.pi) % (2 * np.pi) - np.pi
+    arc = 0.5 * (r * (ctr[:, 0] * (np.sin(th_b) - np.sin(th_i))
+                      - ctr[:, 1] * (np.cos(th_b) - np.cos(th_i))) + r * r * dth)
+    end = pts[:, -1, 1:]
+    green = _bezier_green(np.nan_to_num(ctrl[..., 1:])) + 0.5 * _cross(end, corner[:, 1:]) + arc
+    return np.where(exact, np.abs(green), polygon)
+
+
 def fillet_added_area(body, upper, lower, upper_inter, lower_inter, reference_body=None):
-    """Net added cross-sectional area of the fillet at each station (generalised eqs 11-14).
+    """Net added cross-sectional area of the fillet at each station (eqs 11-14).
 
     Parameters
     ----------
@@ -90,38 +175,34 @@ def fillet_added_area(body, upper, lower, upper_inter, lower_inter, reference_bo
     upper, lower : FilletLines
         Fillet lines of the upper and lower surfaces, paired by lofting-line index.
     upper_inter, lower_inter : BodyIntersection
-        The intersections (their points are the wing root corners I_u, I_l).
+        The intersections (their points are the corners I_u, I_l of the wedges; where a line
+        misses the body, its fillet line's start).
     reference_body : CircularBody, optional
         The original body, when ``body`` is a re-designed (smaller) one. Then a third value
-        is returned: the area added relative to the original configuration, i.e. the fillet
-        plus the wing root uncovered between the original and the re-designed body surfaces,
-        area(F minus D) - area(W minus D_reference).
+        is returned: the area added relative to the original configuration, i.e. the fillets
+        plus the wing root uncovered between the original and the re-designed body circles.
 
     Returns
     -------
     x : (m,) float
         Station of each pair: the x of the upper fillet line's start [deck length].
     area : (m,) float
-        Added area of the fillet (eq 14 generalised), one side [deck length^2].
+        Added area of the two fillets (the upper and the lower wedge), one side of the
+        airplane [deck length^2].
     area_total : (m,) float
         Only with ``reference_body``: fillet plus uncovered wing root, one side.
     """
-    fu, fl = upper.points, lower.points
-    x = fu[:, 0, 0]
-    ctr, r = body.section_at(x)
-    poly = np.concatenate([fu[..., 1:], fl[:, ::-1, 1:]], axis=1)  # (m, 2k, 2) in y-z
-    i_u = np.where(upper_inter.found[:, None], upper_inter.points, upper.start)[:, 1:]
-    i_l = np.where(lower_inter.found[:, None], lower_inter.points, lower.start)[:, 1:]
-    wing = np.stack([i_u, upper.end[:, 1:], lower.end[:, 1:], i_l], axis=1)
-    def outside(shape, c, rad):
-        return np.abs(_polygon_area(shape) - polygon_disk_area(shape, c, rad))
-
-    a_poly = outside(poly, ctr, r)
-    fillet = a_poly - outside(wing, ctr, r)
+    x = upper.points[:, 0, 0]
+    i_u = np.where(upper_inter.found[:, None], upper_inter.points, upper.start)
+    i_l = np.where(lower_inter.found[:, None], lower_inter.points, lower.start)
+    fillet = wedge_area(body, upper, i_u) + wedge_area(body, lower, i_l)
     if reference_body is None:
         return x, fillet
-    total = a_poly - outside(wing, *reference_body.section_at(x))
-    return x, fillet, total
+    wing = np.stack([i_u[:, 1:], upper.end[:, 1:], lower.end[:, 1:], i_l[:, 1:]], axis=1)
+    ctr, r = body.section_at(x)
+    ctr0, r0 = reference_body.section_at(x)
+    uncovered = np.abs(polygon_disk_area(wing, ctr0, r0)) - np.abs(polygon_disk_area(wing, ctr, r))
+    return x, fillet, fillet + uncovered
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -137,8 +218,9 @@ class Compensation:
         Fillet stations (x of the upper fillet lines' starts) of the final iteration.
     area_original, area_fillet, area_fillet_only, area_body : (m,) float
         pi r0(x)^2; the area the re-design takes from the body: the fillets' added area plus
-        the wing root they uncover as the body shrinks; the fillets' area alone (TM-4406
-        eq 14); pi r_new(x)^2 [deck length^2]. All for ``sides`` fillets.
+        (``compensate="section"``) the wing root they uncover as the body shrinks; the
+        fillets' area alone (TM-4406 eq 14); pi r_new(x)^2 [deck length^2]. All for
+        ``sides`` fillets.
     radius_original, radius_new : (m,) float
     residual : (m,) float
         |area_body + area_fillet - area_original| / area_original per station.
@@ -166,15 +248,19 @@ class Compensation:
 def reduced_body(body, x, area_removed, densify=None, exposure=None):
     """``body`` with the fillet stations ``x`` added and pi r^2 reduced by ``area_removed``.
 
-    The removed area is interpolated linearly between the stations (zero outside them) and
-    taken off at every station of the new body, so the new radius at a fillet station x_j is
-    exactly sqrt(r0(x_j)^2 - A_j / pi). ``densify`` extra stations between neighbouring fillet
-    stations (default max(4, 96 / stations): the PDAS deck's three fillet stations need 32
-    near the kinks where the fillet starts, 30 stations need 4) make the body's area follow
-    that interpolation in between
-    (with only the fillet stations, the body's cubic radius would bulge between them and the
-    area distribution, so the wave drag, would not be restored). Camber is kept. Raises
-    GeometryError if the fillet needs more area than the body has.
+    The removed area is interpolated linearly between the stations (zero outside them),
+    except where that is more than half the section and more than the share A_j /
+    pi r0(x_j)^2 interpolated between the same stations, which is then taken (so no station
+    in between gives up more area than it has, e.g. towards a closing tail), and taken off
+    at every station of the new body: the new radius at a fillet station x_j is exactly
+    sqrt(r0(x_j)^2 - A_j / pi). ``densify`` extra stations between
+    neighbouring fillet stations (default max(4, 96 / stations): the PDAS deck's three
+    fillet stations need 32 near the kinks where the fillet starts, 30 stations need 4) make
+    the body's area follow that interpolation in between (with only the fillet stations, the
+    body's cubic radius would bulge between them and the area distribution, so the wave
+    drag, would not be restored). Camber is kept. Stations in a gap between segments become
+    a segment of their own on the straight bridge. Raises GeometryError if the fillet needs
+    more area than the body has.
 
     ``exposure(x) -> L`` (optional) is the length of body perimeter at x covered by the roots
     of wing-like components: shrinking the radius by d there uncovers about L d of their
@@ -214,7 +300,9 @@ class BodyReduction:
             stations = xs
         tol = 1e-12 * max(body.length, 1.0)
         new_x, seg_sizes, base, start, piece = [], [], [], 0, 0
-        for size in body.segments:
+        counts = body.points_per_section
+        pps = [] if counts is not None else None
+        for i, size in enumerate(body.segments):
             sx = xg[start:start + size]
             inner = stations[(stations > sx[0] + tol) & (stations < sx[-1] - tol)]
             inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
@@ -224,12 +312,31 @@ class BodyReduction:
             # pieces (one-sided at a joint where the next segment starts at the same x).
             rc, drc = body._interp.value_and_slope(merged - body.origin[0],
                                                    (piece, piece + size - 2))
+            if new_x and sx[0] > new_x[-1][-1] + tol:
+                # A gap between segments (a straight bridge): stations inside it become a
+                # segment of their own, on the bridge, so the body can give up area there
+                # too (else those stations could not be compensated).
+                x_a, x_b = new_x[-1][-1], sx[0]
+                gap = stations[(stations > x_a + tol) & (stations < x_b - tol)]
+                if gap.size:
+                    bridge = np.concatenate([[x_a], gap, [x_b]])
+                    ra, rb = base[-1][0][-1], rc[0]
+                    slope = (rb - ra) / (x_b - x_a)
+                    new_x.append(bridge)
+                    seg_sizes.append(bridge.size)
+                    base.append((ra + (bridge - x_a)[:, None] * slope[None, :],
+                                 np.repeat(slope[None, :], bridge.size, axis=0)))
+                    if pps is not None:
+                        pps.append(counts[i - 1])
             new_x.append(merged)
             seg_sizes.append(merged.size)
             base.append((rc, drc))
+            if pps is not None:
+                pps.append(counts[i])
             start += size
             piece += size - 1
         self.xs, self.seg_sizes = xs, tuple(seg_sizes)
+        self.points_per_section = None if pps is None else tuple(pps)
         self.xn = xn = np.concatenate(new_x)
         self.rc = np.concatenate([b[0] for b in base])
         self.drc = np.concatenate([b[1] for b in base])
@@ -248,8 +355,32 @@ class BodyReduction:
             rows = np.flatnonzero(ok)
             P[rows, k[ok]] += 1.0 - w[ok]
             P[rows, k[ok] + 1] += w[ok]
+        # Between the stations the area given up is interpolated linearly, but where that is
+        # more than half the section it is capped at the share of the section the stations
+        # around give up, interpolated (towards a closing tail, the linear interpolation of
+        # the area asked for more than the body has).
+        area_n = np.pi * self.r0 ** 2
+        at = np.abs(xn[:, None] - xs[None, :]) <= tol
+        area_s = np.where(at.any(axis=0), (area_n[:, None] * at).max(axis=0),
+                          np.pi * body.radius_at(xs) ** 2)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            share = np.where(area_s[None, :] > 0, area_n[:, None] / area_s[None, :],
+                             at.astype(float))
         self.P = P
+        self.P_share = P * share
+        self._rows = None
         self._dd_da = None
+        # Node spacing to the left and right within each segment (inf where a segment ends):
+        # the slope limiter of :meth:`_slopes` keeps each Hermite piece of the radius
+        # reduction on the side of zero its two nodes are on.
+        h_left, h_right, first = np.full(xn.size, np.inf), np.full(xn.size, np.inf), 0
+        for size in self.seg_sizes:
+            h = np.diff(xn[first:first + size])
+            h_left[first + 1:first + size] = h
+            h_right[first:first + size - 1] = h
+            first += size
+        self._h = (h_left, h_right)
+        self._limit = None
 
     def _gradient(self, values):
         """d(values)/dx along the new stations, segment by segment (np.gradient's scheme)."""
@@ -262,12 +393,39 @@ class BodyReduction:
             first += size
         return out
 
+    def _slopes(self, d):
+        """Slopes of the radius reduction d at the nodes: np.gradient's, limited so that
+        every Hermite piece keeps the sign of its two end values (its Bezier control values
+        d + m h / 3 and d - m h / 3 stay on the side of zero d is on). Without the limit
+        the cubic between a station that gives up area and one that gives up none swings
+        past zero: the re-designed body grew there, aft of the last fillet station (issue
+        11). The limit acts only where the slope would carry the curve across zero."""
+        h_left, h_right = self._h
+        m = self._gradient(d)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            to_left = np.where(np.isfinite(h_left), 3.0 * d / h_left, np.inf)
+            to_right = np.where(np.isfinite(h_right), 3.0 * d / h_right, np.inf)
+        pos = d >= 0
+        lo = np.where(pos, -to_right, np.where(np.isfinite(h_left), to_left, -np.inf))
+        hi = np.where(pos, to_left, np.where(np.isfinite(h_right), -to_right, np.inf))
+        below, above = m < lo, m > hi
+        # d(slope) / d(d) where a bound acts (the bounds are linear in d): kept for jacobian.
+        coef = np.where(below, np.where(pos, -3.0 / h_right, 3.0 / h_left),
+                        np.where(pos, 3.0 / h_left, -3.0 / h_right))
+        self._limit = (below | above, np.where(below | above, coef, 0.0))
+        return np.where(below, lo, np.where(above, hi, m))
+
     def body(self, area_removed):
         """The re-designed CircularBody for removed areas (one per station, input order)."""
         from ..model import CircularBody
 
         body, xn, r0, b = self.original, self.xn, self.r0, self.b
-        removed = self.P @ np.asarray(area_removed, float)[self.order]
+        a = np.asarray(area_removed, float)[self.order]
+        linear, shared = self.P @ a, self.P_share @ a
+        half = 0.5 * np.pi * r0 ** 2
+        cap = np.maximum(shared, half)
+        self._rows = (linear > cap, shared >= half)
+        removed = np.minimum(linear, cap)
         # pi d^2 - (2 pi r0 - L) d + A = 0 for the radius reduction d = r0 - r (smaller root).
         disc = b * b - 4 * np.pi * removed
         if np.any(disc < 0) or np.any(r0 ** 2 - removed / np.pi < 0):
@@ -286,20 +444,24 @@ class BodyReduction:
         # smoothly on the removed areas (a PCHIP rebuild would switch its slope limiter on a
         # cylindrical mid-body, and kink the area iteration's map).
         slopes = self.drc.copy()
-        slopes[:, 0] -= self._gradient(d)
+        slopes[:, 0] -= self._slopes(d)
         return CircularBody(body.name, xn - body.origin[0], r0 - d, self.rc[:, 1], body.origin,
-                            self.seg_sizes, body.mirrored, body.axial, body.points_per_section,
+                            self.seg_sizes, body.mirrored, body.axial, self.points_per_section,
                             slopes)
 
     def jacobian(self, xq):
         """d(r0 - r)(xq) / d(area_removed) of the last :meth:`body`: (len(xq), stations)."""
         from ..model.body import hermite_pieces
 
-        dnode = self._dd_da[:, None] * self.P  # d(d_n) / d(a), sorted station order
+        capped, by_share = self._rows
+        used = np.where(capped[:, None], np.where(by_share[:, None], self.P_share, 0.0), self.P)
+        dnode = self._dd_da[:, None] * used  # d(d_n) / d(a), sorted station order
         # d(xq) is the Hermite interpolant of the nodal d with slopes grad(d), linear in d:
         # interpolate each column of dnode the same way.
         xq = np.asarray(xq, float)
-        d_q = hermite_pieces(self.xn, dnode, self._gradient(dnode), self.seg_sizes)(xq)
+        limited, coef = self._limit
+        dslope = np.where(limited[:, None], coef[:, None] * dnode, self._gradient(dnode))
+        d_q = hermite_pieces(self.xn, dnode, dslope, self.seg_sizes)(xq)
         inside = (xq >= self.xn[0]) & (xq <= self.xn[-1])
         out = np.zeros((xq.size, self.xs.size))
         out[:, self.order] = np.where(inside[:, None], d_q, 0.0)
@@ -356,15 +518,30 @@ def _structured_newton(history, c_upper, w_upper, w_lower):
     return step
 
 
+def _feasible(reduction, t, step, scale=1.0, tries=6):
+    """t + scale step, halved towards t until the body has the area it asks for (the last
+    try raises the GeometryError)."""
+    for k in range(tries):
+        trial = t + scale * 0.5 ** k * step
+        try:
+            reduction.body(trial)
+            return trial
+        except GeometryError:
+            if k == tries - 1:
+                raise
+    return trial
+
+
 def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None,
-              memory=1, initial=None):
+              memory=1, initial=None, compensate: Compensate = "section"):
     """Shrink the body until body area + added area equals the original area (TM-4406).
 
-    TM-4406 compensates the fillet's area (eq 14) only. When the body shrinks, the wing's
-    root extends into the space it leaves, which adds area too (about a fifth of the fillet's
-    on the PDAS sample deck, where compensating the fillet alone left the slender-body wave
-    drag 0.25 % high). The added area compensated here is therefore the fillet plus that
-    uncovered wing root, so that the whole cross-section keeps its original area.
+    TM-4406 compensates the fillet's area (eq 14) only (``compensate="fillet"``). When the
+    body shrinks, the wing's root extends into the space it leaves, which adds area too
+    (about a fifth of the fillet's on the PDAS sample deck, where compensating the fillet
+    alone left the slender-body wave drag 0.25 % high). By default (``"section"``) the added
+    area compensated is therefore the fillet plus that uncovered wing root, so that the whole
+    cross-section keeps its original area.
 
     Parameters
     ----------
@@ -393,11 +570,23 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         with the sensitivities taken as constants across the stations).
     initial : tuple, optional
         ``make_fillets(body, None, False)`` if the caller already has it.
+    compensate : {"section", "fillet"}
+        What the body gives up: the fillets and the wing root they uncover (the whole
+        cross-section keeps its area), or the fillets' area alone (TM-4406 eqs 11-14: the
+        body area plus the fillets' equals the original; ``exposure`` is then not used).
 
     Returns
     -------
     Compensation
-        ``area_fillet`` is the added area of all ``sides`` fillets at each station.
+        ``area_fillet`` is the added area of all ``sides`` fillets at each station (with
+        ``compensate="section"``, plus the uncovered root).
+
+    Raises
+    ------
+    GeometryError
+        An unknown ``compensate``; the fillets need more area than the body has.
+    ConvergenceError
+        The residual does not reach ``tolerance`` in ``max_iterations``.
 
     Notes
     -----
@@ -414,6 +603,11 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     of t (Hermite pieces), so the model holds. The intersections are warm-started from the
     previous iterate while the body only shrinks.
     """
+    if compensate not in ("section", "fillet"):
+        raise GeometryError(f"compensate must be 'section' or 'fillet', found {compensate!r}",
+                            body.name)
+    if compensate == "fillet":
+        exposure = None
     current = body
     first_met = None
     history = []
@@ -422,8 +616,14 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
     for it in range(1, max_iterations + 1):
         parts = initial if (it == 1 and initial is not None) else \
             make_fillets(current, previous, warm)
-        if exposure is not None:
-            # Fillets by their polygons; every uncovered root by its covered perimeter.
+        if compensate == "fillet":
+            # TM-4406: the fillets alone.
+            x, only = fillet_added_area(current, *parts[2:], *parts[:2])
+            r_orig, r_now = body.radius_at(x), current.radius_at(x)
+            only = sides * only
+            a_f, covered = only, 0.0
+        elif exposure is not None:
+            # Fillets by their areas; every uncovered root by its covered perimeter.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])
             r_orig, r_now = body.radius_at(x), current.radius_at(x)
             covered = exposure(x)
@@ -449,14 +649,15 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
         # stations move a little as the body shrinks (the lofting lines meet it further
         # inboard), so the residual F = G - given is measured where they are now, on what
         # the body really gives up there; with the nodes fixed it is a function of t alone.
-        g = only if exposure is not None else a_f
+        g = only if (exposure is not None or compensate == "fillet") else a_f
         given = a0 - a_b - covered * (r_orig - r_now)
         x_low = parts[3].points[:, 0, 0]
         sample = (r_orig - r_now, body.radius_at(x_low) - current.radius_at(x_low), g)
         if reduction is None:
             reduction, t = BodyReduction(body, x, exposure=exposure), given
         f = g - given
-        if history and np.abs(f).max() > np.abs(history[-1][1]).max():
+        size = np.abs(f).max()
+        if history and size > np.abs(history[-1][1]).max():
             history = []  # no progress: start the model again from here
         history.append((t, f, sample))
         step = None
@@ -464,7 +665,13 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, ex
             w = reduction.jacobian(np.concatenate([x, x_low]))
             step = _structured_newton(history[-(memory + 1):], 2 * np.pi * r_now - covered,
                                       w[:x.size], w[x.size:])
-        t = t + f if step is None else t + step
+        if step is not None:
+            try:
+                reduction.body(t + step)
+            except GeometryError:
+                # A Newton step that asks more than the body has: the paper's substitution.
+                step, history = None, []
+        t = _feasible(reduction, t, f if step is None else step)
         current = reduction.body(t)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
         previous, warm = parts, bool(np.all(t >= 0))

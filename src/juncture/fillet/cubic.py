@@ -4,11 +4,59 @@ For each lofting line j of one wing surface (upper or lower) a fillet line runs 
 point B on the body's cross-section circle through the intersection point I, an angular
 distance theta_u above (upper) or below (lower) I, to an end point E on the lofting line. It is
 the cubic f(s) = a1 + a2 s + a3 s^2 + a4 s^3 tangent to the body circle at B and to the
-lofting line at E. Following the paper, s is the nondimensional y-coordinate along the line, so
-the end tangents are dP/dy of the circle and of the lofting line (a Hermite cubic in y).
-Where the circle's tangent at B is nearly vertical (|dy| small: a start near theta = 0 or
-pi), dP/dy is unbounded; there the tangent magnitudes are taken as the chord |E - B| instead
-(same directions, still tangent) and the log says so.
+lofting line at E (eq 7): a Hermite cubic, here also written with its Bezier control points
+B, P1 = B + T_B / 3, P2 = E - T_E / 3, E (``FilletLines.control``).
+
+**A fillet that stays a fillet** (issue 11; TM-4406 lets the cubic dip through the wing, see
+its "Special situations", and its start tangent reverses where B lies past the horizontal).
+A Bezier curve lies in the convex hull of its control points. P1 lies on the body's tangent
+at B (the start tangent), P2 and E on the lofting line (the end tangent), so the curve stays
+between body and wing when P1 and B are on the fillet's side of the wing and P2 and E on the
+outer side of the body, each against two planes:
+
+- the wing's tangent plane along the lofting line at E (its chordwise slope included: a point
+  of the fillet beside the line lies at another chord fraction) and the plane through the
+  lofting line along x (its trace in x = const is the projected line, so each fillet's
+  cross-section polygon stays simple);
+- the body's tangent plane at B (with the slopes of r(x) and of the centre line: the body is
+  locally a cone, and the fillet runs in x from x_I to x_E) and the circle's tangent plane
+  along x.
+
+So, per line:
+
+- **theta_u.** In the cross-section plane the tangent at B meets the wing line at K. With phi
+  the arc from I to B and phi_max the whole body-wing angle at I (pi/2 - theta_i + delta
+  above, pi/2 + theta_i - delta below, delta the wing line's angle in the y-z plane: so
+  phi_max(upper) + phi_max(lower) = pi; the smaller of the values for the wing's plane and
+  the projected line), ``|IK| = r (1 - cos phi) / sin(phi_max - phi)``
+  (:func:`tangent_intersection_distance`). Where that exceeds half of |IE| (the obtuse side
+  of a high or low wing; a wing nearly tangent to the body) theta_u is reduced on that line to
+  the angle that puts K half-way (closed form) and the log says so. As phi_max goes to 0 the
+  fillet shrinks continuously to the sharp intersection ("no room for a fillet").
+- **Tangent lengths.** The paper's parameter s = y (|T_B| = dy / t_By, |T_E| = dy / t_Ey,
+  dy = y_E - y_B: P1 and P2 a third and two thirds of the way in y) wherever that keeps P1
+  and P2 within the longest legs the planes allow; elsewhere the legs' lengths (clipped).
+  Where the chord B -> E runs less than 60 deg from the y axis (s = y is singular at dy =
+  0) the thirds are taken along a direction turned continuously from y towards the chord.
+  Where the paper's lengths reach a little past the legs (up to 1.5 times) they are kept as
+  far as the curve stays clear of the surfaces themselves (checked on 33 points; on the
+  bundled transport the paper's cubic is kept on every line where it fits).
+- **Safety net.** The planes are the surfaces' tangents; over a long fillet a twisted or
+  curved wing can leave less room. Every line is checked against the surfaces themselves
+  (33 points, and the radial gap's second derivative at B), and where one enters either,
+  phi is reduced by bisection (a line with phi = 0 lies on the wing).
+
+The paper's cubic is thus kept where it stays between body and wing, and continued
+continuously elsewhere. Along x, the control points have x_I, x_I, x of P2 on the lofting
+line, x_E: x runs monotonically from the intersection's station to the end point's.
+
+**End point** (the paper's three options, counted on the lofting-line segment that holds I:
+TM-4406's "first and second sections" are the root segment): ``end="section"`` puts E at
+the fraction ``end_value`` of that segment from its inboard section; ``"intersection"`` at
+that fraction of the distance from I to the outboard section; ``"dy"`` at a span increment
+``end_value`` from I. E is held where the lofting line first bends outboard of I (sections
+it runs straight through do not count), so the wing between I and E is straight and the
+curve cannot cut a corner of it; the log says where.
 
 Near the leading and trailing edges the fillet is blended into the sharp intersection over a
 length l_b in x, with beta(L) = sin(pi L / 2) and L = (x - x_le) / l_b (eqs 8-9). Two ways:
@@ -20,12 +68,16 @@ length l_b in x, with beta(L) = sin(pi L / 2) and L = (x - x_le) / l_b (eqs 8-9)
 - ``blending="scale"`` (default) scales the fillet instead: theta_u -> beta theta_u and the end
   point -> I + beta (E - I) along the lofting line. It passes through the same two limits
   (a sharp intersection at beta = 0, the full fillet at beta = 1), but every fillet line starts
-  on the body circle and stays tangent to both surfaces, so the output networks are
-  watertight.
+  on the body and stays tangent to both surfaces and between them, so the output networks
+  are watertight.
 
-End point options (the paper's three): ``end="section"`` puts E at the fraction ``end_value``
-of the distance from section 1 to section 2; ``"intersection"`` at that fraction of the
-distance from I to section 2; ``"dy"`` at a span increment ``end_value`` from I.
+**A lofting line that misses the body** (``missed_lines``): by default ("plane") the line has
+no fillet and is degenerate where the lofting line reaches the plane of symmetry, as without
+a fillet (:mod:`juncture.misses`). TM-4406's special case ("paper": start at theta = -90 deg
+with dx/dy = dz/dy = 0) is kept as an option, but it always lies partly inside the wing: the
+body's bottom is above the wing's lower surface there (the line passes under the body), so
+the start point is inside the wing or above it, and the curve must cross the wing to reach
+its lower surface.
 """
 
 from __future__ import annotations
@@ -38,14 +90,19 @@ import numpy as np
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, polyline_points
 
-__all__ = ["FilletLines", "cubic_fillet", "EndMode", "Blending", "hermite", "blend_factor",
-           "blend_over"]
+__all__ = ["FilletLines", "cubic_fillet", "EndMode", "Blending", "MissedLines", "hermite",
+           "bezier", "blend_factor", "blend_over", "tangent_intersection_distance"]
 
 EndMode = Literal["section", "intersection", "dy"]
 Blending = Literal["scale", "points"]
+MissedLines = Literal["plane", "paper"]
 
 #: Default angular distance of the fillet start from the intersection [rad] (20 deg).
 THETA_U_DEFAULT = float(np.radians(20.0))
+#: The tangent intersection K may lie at most this fraction of the way from I to E.
+K_SHARE = 0.5
+#: Below this share dy / |E - B|, kappa is measured along a direction turned to the chord.
+_Y_SHARE = 0.5
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -66,14 +123,19 @@ class FilletLines:
     blend : (n_stations,) float
         beta(L) of each line (0 at the leading / trailing edge, 1 in the blended-in region).
     dips : (n_stations,) bool
-        Upper (lower) fillet dips below (rises above) the extrapolated wing surface: the
-        low-wing problem of TM-4406; see ``remedy`` of :func:`cubic_fillet`.
+        Upper (lower) fillet dips below (rises above) the wing's tangent plane at its end:
+        the low-wing problem of TM-4406, which :func:`cubic_fillet` no longer has (only
+        ``missed_lines="paper"`` lines can show it).
     kind : str
         ``"cubic"``, ``"parabolas"`` or ``"circular"``.
     log : tuple of str
     blend_range : tuple of float or None
         (x_le, x_te, l_b) the blending used [deck length]: pass it back as ``blend_range``
         to blend another body's fillet over the same region.
+    control : (n_stations, 4, 3) float or None
+        Bezier control points of each line when it is a cubic in s (the points are the
+        cubic at equally spaced s); a row of NaN where a line is not (the z-constraint).
+        Used for the exact added area (:func:`juncture.fillet.fillet_added_area`).
     """
 
     side: str
@@ -87,6 +149,7 @@ class FilletLines:
     kind: str = "cubic"
     log: tuple = ()
     blend_range: tuple = None
+    control: np.ndarray = None
 
 
 def hermite(p0, p1, t0, t1, s):
@@ -99,25 +162,223 @@ def hermite(p0, p1, t0, t1, s):
     return (h00 * p0[:, None] + h10 * t0[:, None] + h01 * p1[:, None] + h11 * t1[:, None])
 
 
-def _end_coordinate(wing, inter, end, end_value):
+def bezier(control, s):
+    """Cubic Bezier curves, vectorised: control (m, 4, d), s (k,) -> (m, k, d)."""
+    s = np.asarray(s, float)[None, :, None]
+    c = np.asarray(control, float)
+    w = 1.0 - s
+    return (w ** 3 * c[:, None, 0] + 3 * w * w * s * c[:, None, 1]
+            + 3 * w * s * s * c[:, None, 2] + s ** 3 * c[:, None, 3])
+
+
+def tangent_intersection_distance(radius, phi, phi_max):
+    """|IK|: where the circle's tangent at B meets the wing line, measured from I.
+
+    B lies an arc ``phi`` from I on a circle of ``radius``; the wing line leaves I at the
+    angle ``pi - phi_max`` to the circle's tangent towards B (``phi_max``: the body-wing
+    angle at I). In the triangle I T K (T where the tangents at I and B meet, |TI| =
+    r tan(phi / 2)) the angles are pi - phi_max at I and phi at T, so by the law of sines
+    ``|IK| = r tan(phi / 2) sin(phi) / sin(phi_max - phi) = r (1 - cos phi) /
+    sin(phi_max - phi)`` [deck length]; infinite for phi >= phi_max.
+
+    Examples
+    --------
+    >>> round(float(tangent_intersection_distance(1.0, np.pi / 4, np.pi / 2)), 12)
+    0.414213562373
+    """
+    radius, phi, phi_max = (np.asarray(a, float) for a in (radius, phi, phi_max))
+    den = np.sin(phi_max - phi)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = radius * (1.0 - np.cos(phi)) / den
+    return np.where((phi < phi_max) & (den > 0), out, np.inf)
+
+
+def _fit_angle(radius, length, phi_max):
+    """Largest phi in [0, phi_max) with |IK|(phi) <= length (closed form).
+
+    r (1 - cos phi) = c sin(phi_max - phi) is A cos phi + b sin phi = r with A = r +
+    c sin phi_max, b = -c cos phi_max; its root in (0, phi_max) is gamma + acos(r / R),
+    R = hypot(A, b), gamma = atan2(b, A).
+    """
+    c = np.maximum(length, 0.0)
+    a = radius + c * np.sin(phi_max)
+    b = -c * np.cos(phi_max)
+    big = np.hypot(a, b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        phi = np.arctan2(b, a) + np.arccos(np.clip(radius / big, -1.0, 1.0))
+    ok = (phi_max > 0) & (c > 0) & (big > 0)
+    return np.where(ok, np.clip(np.nan_to_num(phi), 0.0, np.maximum(phi_max, 0.0)), 0.0)
+
+
+def _wedge_angle(direction, theta_i, sign):
+    """phi_max: angle between the body circle's tangent at I (towards the fillet side) and a
+    wing line leaving I along ``direction`` (m, 2) in the y-z plane, in (-pi, pi]."""
+    phi = 0.5 * np.pi + sign * (np.arctan2(direction[:, 1], direction[:, 0]) - theta_i)
+    return (phi + np.pi) % (2 * np.pi) - np.pi
+
+
+def _wing_normal(wing, side, points, t_e, sign, inboard=None, h=1e-6):
+    """(m, 3) unit normal of the wing surface at points on its lofting lines, away from the
+    wing (up for the upper surface): the chordwise derivative crossed with the line.
+
+    Where the surface has no chordwise extent there (a pointed tip), the normal a hundredth
+    of the way back towards ``inboard`` is taken, and failing that the normal of the plane
+    through the line along x."""
+    f = np.asarray(wing.x_over_c, float) / 100.0
+    lo, hi = np.clip(f - h, 0.0, 1.0), np.clip(f + h, 0.0, 1.0)
+
+    def normal(at):
+        span = at[:, wing.span_axis]
+        d_f = (wing.point(span, hi, side, extrapolate=True)
+               - wing.point(span, lo, side, extrapolate=True)) / (hi - lo)[:, None]
+        n = np.cross(d_f, t_e) * sign
+        size = np.linalg.norm(n, axis=1)
+        ok = size > 1e-9 * np.maximum(np.linalg.norm(d_f, axis=1), 1e-300)
+        ok &= size > 1e-12 * max(float(np.abs(wing.chord).max()), 1.0)
+        return n / np.where(ok, size, 1.0)[:, None], ok
+
+    n, ok = normal(points)
+    if inboard is not None and not ok.all():
+        n2, ok2 = normal(points + 0.01 * (inboard - points))
+        n = np.where(ok[:, None], n, n2)
+        ok = ok | ok2
+    if not ok.all():
+        flat = np.stack([np.zeros(len(t_e)), -t_e[:, 2], t_e[:, 1]], axis=1) * sign
+        flat /= np.maximum(np.linalg.norm(flat, axis=1), 1e-300)[:, None]
+        n = np.where(ok[:, None], n, flat)
+    return n
+
+
+def _body_normal(body, x, theta):
+    """(m, 3) unit outward normal of a circular body at (x, theta), with the slopes of r(x)
+    and of the centre height (the body is locally a cone)."""
+    slope = body.radius_at(x, 1) + body.center_at(x, 1)[:, 1] * np.sin(theta)
+    n = np.stack([-slope, np.cos(theta), np.sin(theta)], axis=1)
+    return n / np.linalg.norm(n, axis=1)[:, None]
+
+
+def _ray_to_plane(origin, direction, normal, on_plane, scale):
+    """Distance along ``direction`` from ``origin`` to the plane through ``on_plane`` whose
+    ``normal`` points to the side ``origin`` should be on (all (m, 3)).
+
+    0 where ``origin`` is on the plane or on its other side (no room); at most |scale|, which
+    is also the value where the ray runs parallel to the plane or away from it (the plane
+    sets no limit there, and a shorter leg keeps the control point on the same side).
+    """
+    gap = ((origin - on_plane) * normal).sum(1)
+    rate = -(direction * normal).sum(1)
+    far = np.linalg.norm(scale, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = np.minimum(gap / rate, far)
+    return np.where(gap <= 0, 0.0, np.where(rate > 0, out, far))
+
+
+def _wing_depth(wing, points):
+    """How deep points (..., 3) lie inside the wing (> 0 inside, lofting lines extended):
+    its surfaces at the points' span and chord fraction; -inf off the planform."""
+    span = points[..., wing.span_axis]
+    ends = wing.point(span[..., None], np.array([0.0, 1.0]), "upper", extrapolate=True)
+    x0, x1 = ends[..., 0, 0], ends[..., 1, 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f = (points[..., 0] - x0) / (x1 - x0)
+    inside = np.isfinite(f) & (f > 0) & (f < 1)
+    fc = np.where(inside, f, 0.5)
+    a = wing.thickness_axis
+    up = wing.point(span, fc, "upper", extrapolate=True)[..., a]
+    lo = wing.point(span, fc, "lower", extrapolate=True)[..., a]
+    t = points[..., a]
+    return np.where(inside, np.minimum(t - lo, up - t), -np.inf)
+
+
+def _clear(wing, side, body, control, tol, corner, n=17):
+    """Lines (m,) whose cubic stays out of the body and the wing: sampled densely (also in
+    projection on x = x_I, against the body circle and the straight wing line from E back to
+    the ``corner`` I), and at its start, where it leaves the body tangentially, by the
+    second derivative of the radial gap, e''(0) = |T_B|^2 / r + 6 N_B . (P2 - B) >= 0 (N_B
+    the body's normal with the cone's slope, unnormalised)."""
+    p = bezier(control, np.linspace(0.0, 1.0, n))
+    out_body = body.radial_error(p.reshape(-1, 3)).reshape(p.shape[:2]) >= -tol
+    out_wing = _wing_depth(wing, p) <= tol
+    B = control[:, 0]
+    ctr, r = body.section_at(B[:, 0])
+    flat = np.hypot(p[..., 1] - ctr[:, None, 0], p[..., 2] - ctr[:, None, 1]) - r[:, None]
+    line = control[:, 3, 1:] - corner[:, 1:]
+    normal = np.stack([-line[:, 1], line[:, 0]], axis=1)
+    normal *= np.where((normal * (B[:, 1:] - corner[:, 1:])).sum(1) < 0, -1.0, 1.0)[:, None]
+    normal /= np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
+    above = ((p[..., 1:] - corner[:, None, 1:]) * normal[:, None]).sum(-1)
+    sampled = np.all(out_body & out_wing & (flat >= -tol) & (above >= -tol)
+                     | ~np.isfinite(p).all(-1), axis=1)
+    theta = np.arctan2(B[:, 2] - ctr[:, 1], B[:, 1] - ctr[:, 0])
+    slope = body.radius_at(B[:, 0], 1) + body.center_at(B[:, 0], 1)[:, 1] * np.sin(theta)
+    n_b = np.stack([-slope, np.cos(theta), np.sin(theta)], axis=1)
+    t0 = 3.0 * (control[:, 1] - B)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        bend = (t0 * t0).sum(1) / r + 6.0 * (n_b * (control[:, 2] - B)).sum(1)
+    return sampled & ~(bend < -1e-12 * (t0 * t0).sum(1) / np.where(r > 0, r, 1.0))
+
+
+def _leg_share(along, rate, leg):
+    """Share of the longest leg that the paper's tangent length takes (s = y generalised to
+    s along v: |T| = (chord . v) / (t . v), the control point a third of the way along v);
+    +inf where t . v <= 0 (the tangent runs backwards along v: its length is not bounded by
+    the paper's rule, so the longest leg is taken)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        share = along / (3.0 * rate * leg)
+    return np.where((rate > 0) & (leg > 0), share, np.inf)
+
+
+def _line_direction(lines, u, k, found, last=None):
+    """(m, 3) unit direction of each lofting line where it reaches u from inboard (the
+    segment ending at u where u is a section, to rounding), between segments k and last."""
+    n = lines.shape[1]
+    rows = np.arange(lines.shape[0])
+    seg = np.clip(np.ceil(np.nan_to_num(u) - 1e-9) - 1, 0, n - 2).astype(int)
+    seg = np.maximum(seg, k) if last is None else np.clip(seg, k, np.maximum(last, k))
+    seg = np.where(found, seg, k)
+    d = lines[rows, seg + 1] - lines[rows, seg]
+    return d / np.linalg.norm(d, axis=1)[:, None]
+
+
+def _segment(u, n_sections):
+    """Index of the lofting-line segment holding section coordinate u (extended at the ends)."""
+    u = np.nan_to_num(np.asarray(u, float))
+    return np.clip(np.floor(u), 0, n_sections - 2).astype(int)
+
+
+def _end_coordinate(wing, inter, end, end_value, k, side, lines):
+    """Section coordinate of E per line (module docstring), and the lines where it is held."""
     u_i = inter.u
+    st = wing.span_stations
     if end == "section":
-        u_e = np.full_like(u_i, float(end_value))
+        u_e = k + float(end_value)
     elif end == "intersection":
-        u_e = u_i + float(end_value) * (1.0 - u_i)
+        u_e = u_i + float(end_value) * ((k + 1.0) - u_i)
     elif end == "dy":
-        st = wing.span_stations
-        u_e = u_i + float(end_value) / (st[1] - st[0])
+        u_e = u_i + float(end_value) / (st[k + 1] - st[k])
     else:
         raise GeometryError(f"fillet end must be 'section', 'intersection' or 'dy', found "
                             f"{end!r}", wing.name)
-    bad = u_e <= u_i
-    if np.any(bad & inter.found):
-        j = int(np.argmax(bad & inter.found))
-        raise GeometryError(f"fillet end point (u = {u_e[j]:.4g}) is not outboard of the "
-                            f"intersection (u = {u_i[j]:.4g}) on lofting line {j + 1}; "
-                            "choose a larger end value", wing.name)
-    return u_e
+    found = np.asarray(inter.found, bool)
+    bad = ~(u_e > u_i) & found
+    if np.any(bad):
+        j = int(np.argmax(bad))
+        raise GeometryError(f"{side} fillet line {j + 1}: the fillet end point (u = "
+                            f"{u_e[j]:.4g}) is not outboard of the intersection (u = "
+                            f"{u_i[j]:.4g}) on its lofting line; choose a larger end value or "
+                            "end='dy'", wing.name, j + 1)
+    # Hold E where the lofting line bends first outboard of I (sections it runs straight
+    # through do not count; the tip at most): the wing between I and E is then straight,
+    # and a curve through I, P2 and E cannot cut a corner of it.
+    d = np.diff(lines, axis=1)
+    d = d / np.linalg.norm(d, axis=2)[..., None]
+    kink = np.ones(lines.shape[:2], bool)
+    kink[:, 1:-1] = 1.0 - (d[:, :-1] * d[:, 1:]).sum(-1) > 1e-12
+    sections = np.arange(lines.shape[1])
+    u_max = np.where(kink & (sections[None, :] >= k[:, None] + 1), sections[None, :],
+                     lines.shape[1] - 1).min(axis=1).astype(float)
+    held = found & (u_e > u_max)
+    return np.where(held, u_max, u_e), held
 
 
 def blend_over(x_i, blend_length=None, blend_range=None):
@@ -148,10 +409,26 @@ def blend_factor(x, x_le, x_te, blend_length):
     return np.sin(0.5 * np.pi * L)
 
 
+def _cross(a, b):
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def _runs(rows):
+    """'3, 5-8' from 0-based row indices (1-based in the text)."""
+    rows = [int(j) + 1 for j in rows]
+    out, start = [], None
+    for a, b in zip(rows, rows[1:] + [None]):
+        start = a if start is None else start
+        if b != a + 1:
+            out.append(f"{start}" if start == a else f"{start}-{a}")
+            start = None
+    return ", ".join(out)
+
+
 def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
                  end: EndMode = "intersection", end_value=0.5, blend_length=None,
                  n_points=9, remedy=None, upper_reference=None, blending: Blending = "scale",
-                 blend_range=None):
+                 blend_range=None, missed_lines: MissedLines = "plane"):
     """Cubic-arc fillet lines for one surface (TM-4406 eq 7, eqs 8-10).
 
     Parameters
@@ -162,7 +439,8 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         The intersection of this surface (``inter.side``) with the body.
     theta_u : float or (n_stations,) float
         Angular distance of the start point from the intersection along the body circle,
-        upward for the upper surface, downward for the lower [rad].
+        upward for the upper surface, downward for the lower [rad]; reduced on a line where
+        the fillet would not fit between body and wing (module docstring).
     end, end_value :
         End-point option and its value (see the module docstring).
     blend_length : float, optional
@@ -170,139 +448,324 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     n_points : int
         Points per fillet line (>= 2), equally spaced in s.
     remedy : {None, "z-constraint", "parabolas"}
-        What to do where a fillet dips through the extrapolated wing surface: nothing (only
-        report it in ``dips`` and the log), clamp it to that surface (a slope discontinuity,
-        as the paper warns), or use the method of blended parabolas (an Overhauser curve
-        through a body point before B, B, E and a lofting-line point after E).
+        TM-4406's remedies for a fillet that dips through the extrapolated wing surface. The
+        fillet here cannot dip (module docstring), so "z-constraint" (clamp to that surface)
+        never acts; it is kept for old option sets. "parabolas" is the method of blended
+        parabolas (Overhauser) with the neighbouring points taken on the end tangents, so
+        that it stays tangent at both ends: P0 = E - 2 T_B on the body's tangent at B and
+        P3 = B + 2 T_E on the lofting line, with the lengths the paper's neighbours give
+        (|E - P0'| / 2 and |P3' - B| / 2 for P0' on the circle 10 deg beyond B, P3' one
+        chord beyond E), limited to the longest legs (module docstring).
     upper_reference : BodyIntersection, optional
-        Where the lower-surface line misses the body (the paper's special case), the x of the
-        fillet start is taken from this upper-surface intersection's line of the same index.
+        With ``missed_lines="paper"``: where the lower-surface line misses the body, the x of
+        the fillet start is taken from this upper-surface intersection's line.
     blending : {"scale", "points"}
         How the fillet is blended out towards the leading and trailing edges (module docstring).
     blend_range : (x_le, x_te, l_b), optional
         A fixed blending region (see :func:`blend_over`), e.g. a previous fillet's
         ``blend_range``; ``blend_length`` is then ignored.
+    missed_lines : {"plane", "paper"}
+        Lofting lines that miss the body: no fillet, the line degenerate where it reaches the
+        plane of symmetry (default), or TM-4406's start at the bottom (module docstring).
 
     Returns
     -------
     FilletLines
+        With ``control``, the Bezier control points of every line.
+
+    Raises
+    ------
+    GeometryError
+        An end option that puts E inboard of I (``end="section"`` with a fraction short of
+        the intersection), naming the line; with ``missed_lines="paper"``, an end point not
+        outboard of the start.
     """
     side = inter.side
     sign = 1.0 if side == "upper" else -1.0
     if blending not in ("scale", "points"):
         raise GeometryError(f"fillet blending must be 'scale' or 'points', found {blending!r}",
                             wing.name)
-    lines = wing.lofting_lines(side)
-    m = lines.shape[0]
-    u_full = _end_coordinate(wing, inter, end, end_value)
-    missed = ~inter.found
-    I = inter.points.copy()
-    theta_i = inter.theta.copy()
-    log = []
-    x_b = I[:, 0].copy()
-    if missed.any():
-        # The paper's special case: the lower line misses the body. Start at theta = -90 deg,
-        # at the x of the upper intersection of the same line (else the line's root x), with
-        # dx/dy = dz/dy = 0.
-        x_ref = lines[:, 0, 0] if upper_reference is None else np.where(
-            upper_reference.found, upper_reference.points[:, 0], lines[:, 0, 0])
-        x_b[missed] = x_ref[missed]
-        theta_i[missed] = 0.5 * np.pi * sign  # the bottom for the lower surface
-        I[missed] = body.point(x_b[missed], theta_i[missed])
-        u_full = np.where(missed, 0.0, u_full)
-        for j in np.flatnonzero(missed):
-            log.append(f"{wing.name} {side} fillet line {j + 1}: lofting line misses "
-                       f"{body.name}; fillet starts at theta = {np.degrees(theta_i[j]):.0f} deg "
-                       "with dx/dy = dz/dy = 0 (TM-4406 special case)")
-    x_i = I[:, 0]
-    beta, blend_range = blend_over(x_i, blend_length, blend_range)
-    beta = np.where(missed, 1.0, beta)
-    scale = beta if blending == "scale" else np.ones(m)
-    theta_u = np.broadcast_to(np.asarray(theta_u, float), (m,))
-    theta_b = np.where(missed, theta_i, theta_i + sign * scale * theta_u)
-    u_i = np.where(missed, 0.0, inter.u)
-    u_e = u_i + scale * (u_full - u_i)
-    E = polyline_points(lines, u_e[:, None])[:, 0]
-    dirs = lines[:, 1] - lines[:, 0]
-    t_e = dirs / np.linalg.norm(dirs, axis=1)[:, None]
-    B = body.point(x_b, theta_b)
-    # Circle tangent at B pointing away from the body towards the wing (theta moving towards
-    # theta_i), then scaled to dP/dy.
-    t_b = np.stack([np.zeros(m), np.sin(theta_b), -np.cos(theta_b)], axis=1) * sign
-    t_b[missed] = [0.0, 1.0, 0.0]
-    live = scale > 0
-    dy = E[:, 1] - B[:, 1]
-    if np.any(live & (dy <= 0)):
-        j = int(np.argmax(live & (dy <= 0)))
-        raise GeometryError(f"{side} fillet line {j + 1}: the end point is not outboard of the "
-                            "start point; reduce theta_u or move the end point out",
-                            wing.name, j + 1)
-    steep = np.abs(t_b[:, 1]) < 0.2
-    chord = np.linalg.norm(E - B, axis=1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        mag_b = np.where(steep, chord, dy / np.where(steep, 1.0, t_b[:, 1]))
-        mag_e = np.where(steep, chord, dy / t_e[:, 1])
-    mag_b = np.where(live, mag_b, 0.0)
-    mag_e = np.where(live, mag_e, 0.0)
-    for j in np.flatnonzero(steep & ~missed & live):
-        log.append(f"{wing.name} {side} fillet line {j + 1}: start tangent nearly vertical "
-                   f"(theta = {np.degrees(theta_b[j]):.1f} deg); chord-length tangents used")
-    s = np.linspace(0.0, 1.0, int(n_points))
-    kind = "cubic"
-    if remedy == "parabolas":
-        f = _blended_parabolas(body, B, theta_b, sign, E, t_e, chord, s)
-        kind = "parabolas"
-    else:
-        f = hermite(B, E, t_b * mag_b[:, None], t_e * mag_e[:, None], s)
-    # Extrapolated lofting line from I to E at the same s (the v of eq 10).
-    v = I[:, None] + s[None, :, None] * (E - I)[:, None]
-    dips = _dips(f, v, sign, s) & live
-    if remedy == "z-constraint":
-        f = f.copy()
-        f[..., 2] = np.where(sign * (f[..., 2] - v[..., 2]) < 0, v[..., 2], f[..., 2])
-        log.append(f"{wing.name} {side}: z-constraint applied to {int(dips.sum())} dipping "
-                   "fillet lines (slope discontinuities where it acts)")
-    elif remedy not in (None, "parabolas"):
+    if remedy not in (None, "z-constraint", "parabolas"):
         raise GeometryError(f"fillet remedy must be None, 'z-constraint' or 'parabolas', found "
                             f"{remedy!r}", wing.name)
+    if missed_lines not in ("plane", "paper"):
+        raise GeometryError(f"missed_lines must be 'plane' or 'paper', found {missed_lines!r}",
+                            wing.name)
+    lines = wing.lofting_lines(side)
+    m, n_sec = lines.shape[:2]
+    found = np.asarray(inter.found, bool)
+    missed = ~found
+    k = _segment(inter.u, n_sec)
+    u_full, held = _end_coordinate(wing, inter, end, end_value, k, side, lines)
+    I = inter.points.copy()
+    theta_i = inter.theta.copy()
+    u_i = inter.u.copy()
+    log = []
+    paper_miss = missed & (missed_lines == "paper")
+    plane_miss = missed & (missed_lines == "plane")
+    ends = None
+    if paper_miss.any():
+        # TM-4406's special case: start at theta = -90 deg (+90 above), at the x of the upper
+        # intersection of the same line (else the line's root x), with dx/dy = dz/dy = 0.
+        x_ref = lines[:, 0, 0] if upper_reference is None else np.where(
+            upper_reference.found, upper_reference.points[:, 0], lines[:, 0, 0])
+        theta_i[paper_miss] = 0.5 * np.pi * sign
+        I[paper_miss] = body.point(x_ref[paper_miss], theta_i[paper_miss])
+        u_full[paper_miss], u_i[paper_miss], k[paper_miss] = 0.0, 0.0, 0
+        for j in np.flatnonzero(paper_miss):
+            log.append(f"{wing.name} {side} fillet line {j + 1}: lofting line misses "
+                       f"{body.name}; fillet starts at theta = {np.degrees(theta_i[j]):.0f} deg "
+                       "with dx/dy = dz/dy = 0 (TM-4406 special case; it lies partly inside "
+                       "the wing)")
+    if plane_miss.any():
+        from ..misses import line_ends
+
+        ends = line_ends(wing, body, inter)
+        I[plane_miss], theta_i[plane_miss] = ends.points[plane_miss], ends.theta[plane_miss]
+        u_i[plane_miss] = u_full[plane_miss] = ends.u[plane_miss]
+        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(plane_miss))}: the "
+                   f"lofting line misses {body.name}; no fillet there (the line ends on the "
+                   "plane of symmetry; TM-4406's start at the body's bottom would lie inside "
+                   "the wing)")
+    if held.any():
+        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(held))}: end point "
+                   "held at the next section where the lofting line bends (the fillet ends on "
+                   "the straight part of the line that holds the intersection)")
+    x_i = I[:, 0]
+    beta, blend_range = blend_over(x_i, blend_length, blend_range)
+    beta = np.where(paper_miss, 1.0, np.where(plane_miss, 0.0, beta))
+    scale = beta if blending == "scale" else np.ones(m)
+    scale = np.where(plane_miss, 0.0, scale)
+    theta_u = np.broadcast_to(np.asarray(theta_u, float), (m,))
+
+    # The wing's tangent plane along the lofting line (at the requested end point) and its
+    # trace in the cross-section plane x = x_I (module docstring).
+    E_full = polyline_points(lines, u_full[:, None])[:, 0]
+    t_full = _line_direction(lines, u_full, k, found)
+    k_full = np.clip(np.ceil(np.nan_to_num(u_full) - 1e-9) - 1, 0, n_sec - 2).astype(int)
+    n_w = _wing_normal(wing, side, E_full, t_full, sign, I)
+    trace = np.stack([-n_w[:, 2], n_w[:, 1]], axis=1)
+    trace *= np.where((trace * t_full[:, 1:]).sum(1) < 0, -1.0, 1.0)[:, None]
+    # The body-wing angle at I, against the wing's plane and against the lofting line
+    # projected into x = x_I (the cross-section the added area is measured in): the fillet
+    # keeps to the smaller wedge of the two.
+    projected = t_full[:, 1:] / np.linalg.norm(t_full[:, 1:], axis=1)[:, None]
+    phi_max = np.minimum(_wedge_angle(trace, theta_i, sign),
+                         _wedge_angle(projected, theta_i, sign))
+    r_i = body.radius_at(x_i)
+    mu_full = np.linalg.norm(E_full[:, 1:] - I[:, 1:], axis=1)
+    phi_fit = _fit_angle(r_i, K_SHARE * mu_full, phi_max)
+    phi = np.where(found, np.minimum(theta_u, phi_fit), theta_u)
+    reduced = found & (scale > 0) & (phi < theta_u)
+    if reduced.any():
+        worst = int(np.argmin(np.where(reduced, phi, np.inf)))
+        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(reduced))}: theta_u "
+                   f"reduced (to {np.degrees(phi[worst]):.3g} deg on line {worst + 1}, where "
+                   f"body and wing meet at {np.degrees(phi_max[worst]):.3g} deg) so that the "
+                   "fillet stays between body and wing")
+    tight = found & (scale > 0) & (phi_max < np.radians(1.0))
+    if tight.any():
+        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(tight))}: the wing "
+                   f"is nearly tangent to {body.name} (less than 1 deg between them): no room "
+                   "for a fillet there, the line is left nearly sharp")
+
+    u_e = u_i + scale * (u_full - u_i)
+    E = polyline_points(lines, u_e[:, None])[:, 0]
+    live = scale > 0
+    # The end tangent and the wing's plane where the (blended) end point lies.
+    t_e = _line_direction(lines, u_e, k, found, k_full)
+    n_e = _wing_normal(wing, side, E, t_e, sign, I)
+    # ... and the plane through the lofting line along x (its trace in x = const is the
+    # projected line: keeping to it keeps each fillet's cross-section polygon simple).
+    n_e2 = np.stack([np.zeros(m), -t_e[:, 2], t_e[:, 1]], axis=1) * sign
+    n_e2 /= np.linalg.norm(n_e2, axis=1)[:, None]
+    if paper_miss.any():
+        dy = E[:, 1] - body.point(x_i, theta_i)[:, 1]
+        bad = paper_miss & (dy <= 0)
+        if bad.any():
+            j = int(np.argmax(bad))
+            raise GeometryError(f"{side} fillet line {j + 1}: the end point is not outboard of "
+                                "the start point at the body's bottom (TM-4406 special case); "
+                                "use missed_lines='plane' or move the end point out",
+                                wing.name, j + 1)
+
+    def geometry(phi):
+        """Start point, tangent, longest legs and the paper's shares for arcs ``phi``."""
+        theta_b = np.where(paper_miss, theta_i, theta_i + sign * scale * phi)
+        B = body.point(x_i, theta_b)
+        # Circle tangent at B pointing towards the wing (theta moving towards theta_i).
+        t_b = np.stack([np.zeros(m), np.sin(theta_b), -np.cos(theta_b)], axis=1) * sign
+        t_b[paper_miss] = [0.0, 1.0, 0.0]
+        dy = E[:, 1] - B[:, 1]
+        # The longest legs that keep the control polygon between the two tangent planes: P1
+        # on the body's tangent at B up to the wing's plane, P2 on the lofting line back to
+        # the body's tangent plane at B.
+        n_b = _body_normal(body, x_i, theta_b)
+        n_b2 = np.stack([np.zeros(m), np.cos(theta_b), np.sin(theta_b)], axis=1)
+        leg_b = np.minimum(_ray_to_plane(B, t_b, n_e, E, E - B),
+                           _ray_to_plane(B, t_b, n_e2, E, E - B))
+        leg_e = np.minimum(_ray_to_plane(E, -t_e, n_b, B, E - B),
+                           _ray_to_plane(E, -t_e, n_b2, B, E - B))
+        chord = E[:, 1:] - B[:, 1:]
+        c_len = np.linalg.norm(chord, axis=1)
+        c_dir = chord / np.where(c_len > 0, c_len, 1.0)[:, None]
+        mix = np.maximum(0.0, _Y_SHARE - c_dir[:, 0])
+        v = np.stack([1.0 + mix * c_dir[:, 0], mix * c_dir[:, 1]], axis=1)
+        along = (chord * v).sum(1)
+        share_b = _leg_share(along, (t_b[:, 1:] * v).sum(1), leg_b)
+        share_e = _leg_share(along, (t_e[:, 1:] * v).sum(1), leg_e)
+        eligible = (mix == 0) & (dy > 0) & np.isfinite(share_b) & np.isfinite(share_e) & \
+            (share_b > 0) & (share_e > 0)
+        return theta_b, B, t_b, dy, leg_b, leg_e, share_b, share_e, eligible
+
+    def finish(geo, w=0.0):
+        """Tangents and control points, and the lines whose paper tangents lie beyond the
+        guarantee (``w``: how far towards them, see below)."""
+        theta_b, B, t_b, dy, leg_b, leg_e, share_b, share_e, eligible = geo
+        top = np.maximum(share_b, share_e)
+        # Beyond the guarantee (a share above 1), the paper's tangents are taken as far as
+        # the caller found them clear of both surfaces (w), tapering off between 1.25 and 1.5.
+        reach = eligible & (top > 1.0) & (top < 1.5)
+        w = np.where(reach, np.minimum(w, np.clip((1.5 - top) / 0.25, 0.0, 1.0)), 0.0)
+        paper = eligible & ((top <= 1.0) | (w == 1.0))
+        g_b, g_e = np.clip(share_b, 0.0, 1.0), np.clip(share_e, 0.0, 1.0)
+        share_b = np.where(reach, g_b + w * np.where(reach, share_b - g_b, 0.0), g_b)
+        share_e = np.where(reach, g_e + w * np.where(reach, share_e - g_e, 0.0), g_e)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mag_b = np.where(paper, dy / np.where(paper, t_b[:, 1], 1.0), 3.0 * share_b * leg_b)
+            mag_e = np.where(paper, dy / np.where(paper, t_e[:, 1], 1.0), 3.0 * share_e * leg_e)
+            mag_b = np.where(paper_miss, dy, mag_b)
+            mag_e = np.where(paper_miss, dy / t_e[:, 1], mag_e)
+        mag_b = np.where(live, mag_b, 0.0)
+        mag_e = np.where(live, mag_e, 0.0)
+        if remedy == "parabolas":
+            mag_b, mag_e = _parabola_lengths(body, B, theta_b, sign, E, t_e, leg_b, leg_e,
+                                             mag_b, mag_e, ~paper_miss & live)
+        T0, T1 = t_b * mag_b[:, None], t_e * mag_e[:, None]
+        control = np.stack([B, B + T0 / 3.0, E - T1 / 3.0, E], axis=1)
+        return B, theta_b, T0, T1, control, reach & live & ~paper_miss
+
+    def build(phi, w=0.0):
+        return finish(geometry(phi), w)
+
+    geo = geometry(phi)
+    B, theta_b, T0, T1, control, reach = finish(geo)
+    # The safety net: the construction keeps the control polygon between the tangent planes
+    # of body and wing; where the surfaces curve away from those planes the wrong way over a
+    # long fillet (a twisted wing, far end points), check against the surfaces themselves
+    # and bring B closer to I on the lines that enter either (bisection on phi).
+    check = found & live & ~paper_miss
+    tol = 1e-10 * max(float(body.length), 1.0)
+    samples = 33  # the check's points along each line (independent of n_points)
+
+    def clear(ctrl, rows):
+        """Whether the lines ``rows`` (bool mask) of ``ctrl`` are clear (True elsewhere)."""
+        out = np.ones(m, bool)
+        if rows.any():
+            out[rows] = _clear(wing, side, body, ctrl[rows], tol, I[rows], samples)
+        return out
+
+    bad = check & ~clear(control, check)
+    if bad.any():
+        lo, hi = np.zeros(m), np.ones(m)
+        for _ in range(20):
+            mid = 0.5 * (lo + hi)
+            ok = clear(build(np.where(bad, mid * phi, phi))[4], bad)
+            lo, hi = np.where(bad & ok, mid, lo), np.where(bad & ~ok, mid, hi)
+        phi = np.where(bad, lo * phi, phi)
+        geo = geometry(phi)
+        B, theta_b, T0, T1, control, reach = finish(geo)
+        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(bad))}: theta_u "
+                   "reduced further where the curved surfaces leave less room than their "
+                   "tangent planes")
+    # Where the paper's own tangent lengths (s = y) reach a little past the guaranteed legs,
+    # they are kept if the curve they give stays clear of both surfaces (the transport's
+    # numbers stay the paper's), else taken as far towards them as it does (bisection).
+    if reach.any():
+        # The control points are linear in w (between the guaranteed lengths, w = 0, and the
+        # paper's, w = 1): all candidates w = k / 8 of all such lines in one check.
+        full = finish(geo, 1.0)
+        c0, c1 = control, full[4]
+        grid = np.arange(1, 9) / 8.0
+        rows = np.flatnonzero(reach)
+        cand = c0[rows, None] + grid[None, :, None, None] * (c1 - c0)[rows, None]
+        ok = _clear(wing, side, body, cand.reshape(-1, 4, 3), tol,
+                    np.repeat(I[rows], grid.size, axis=0), samples).reshape(rows.size, -1)
+        # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
+        upto = np.cumprod(ok, axis=1).sum(axis=1)
+        part, whole = rows[(upto > 0) & (upto < grid.size)], rows[upto == grid.size]
+        control, T0, T1 = control.copy(), T0.copy(), T1.copy()
+        control[part] = cand[np.flatnonzero((upto > 0) & (upto < grid.size)),
+                             upto[(upto > 0) & (upto < grid.size)] - 1]
+        T0[part] = 3.0 * (control[part, 1] - control[part, 0])
+        T1[part] = 3.0 * (control[part, 3] - control[part, 2])
+        control[whole], T0[whole], T1[whole] = c1[whole], full[2][whole], full[3][whole]
+    s = np.linspace(0.0, 1.0, int(n_points))
+    kind = "parabolas" if remedy == "parabolas" else "cubic"
+    f = hermite(B, E, T0, T1, s)
+    # Extrapolated lofting line from I to E at the same s (the v of eq 10).
+    v_line = I[:, None] + s[None, :, None] * (E - I)[:, None]
+    dips = _dips(f, n_e, E, np.linalg.norm(E - B, axis=1)) & live
+    if remedy == "z-constraint":
+        f = f.copy()
+        clamp = sign * (f[..., 2] - v_line[..., 2]) < 0
+        f[..., 2] = np.where(clamp, v_line[..., 2], f[..., 2])
+        control[clamp.any(axis=1)] = np.nan
+        log.append(f"{wing.name} {side}: z-constraint applied to {int(dips.sum())} dipping "
+                   "fillet lines (slope discontinuities where it acts)")
     for j in np.flatnonzero(dips):
         log.append(f"{wing.name} {side} fillet line {j + 1}: fillet "
                    f"{'dips below' if sign > 0 else 'rises above'} the extrapolated wing "
                    "surface (low-wing case); remedies: larger theta_u, remedy='z-constraint', "
                    "remedy='parabolas', or fillet='circular'")
+    start, end_pt, theta_start, u_end = B, E, theta_b, u_e
     if blending == "points":
-        pts = (1.0 - beta)[:, None, None] * v + beta[:, None, None] * f
+        pts = (1.0 - beta)[:, None, None] * v_line + beta[:, None, None] * f
+        line_ctrl = I[:, None] + np.array([0.0, 1.0, 2.0, 3.0])[None, :, None] / 3.0 * \
+            (E - I)[:, None]
+        control = (1.0 - beta)[:, None, None] * line_ctrl + beta[:, None, None] * control
         start = pts[:, 0]
         ctr = body.center_at(start[:, 0])
-        theta_b = np.arctan2(start[:, 2] - ctr[:, 1], start[:, 1] - ctr[:, 0])
+        theta_start = np.arctan2(start[:, 2] - ctr[:, 1], start[:, 1] - ctr[:, 0])
     else:
-        pts, start = f, B
-    return FilletLines(side, pts, start, E, theta_b, u_e, beta, dips, kind, tuple(log),
-                       blend_range)
+        pts = f
+    if plane_miss.any():
+        pts, control = pts.copy(), control.copy()
+        start, end_pt = start.copy(), end_pt.copy()
+        theta_start, u_end = np.array(theta_start, float), np.array(u_end, float)
+        q_pts = ends.points[plane_miss]
+        pts[plane_miss] = q_pts[:, None, :]
+        control[plane_miss] = q_pts[:, None, :]
+        start[plane_miss], end_pt[plane_miss] = q_pts, q_pts
+        theta_start[plane_miss], u_end[plane_miss] = ends.theta[plane_miss], ends.u[plane_miss]
+    return FilletLines(side, pts, start, end_pt, theta_start, u_end, beta, dips, kind,
+                       tuple(log), blend_range, control)
 
 
-def _dips(f, v, sign, s):
-    """Interior fillet points on the wrong side of the extrapolated wing surface."""
-    # Compare heights at the same y: v is linear in y between I and E.
-    inner = (s > 0) & (s < 1)
-    yv0, yv1 = v[:, 0, 1], v[:, -1, 1]
-    t = (f[..., 1] - yv0[:, None]) / np.where(yv1 != yv0, yv1 - yv0, 1.0)[:, None]
-    within = (t > 0) & (t < 1) & inner[None, :]
-    zv = v[:, 0, 2][:, None] + t * (v[:, -1, 2] - v[:, 0, 2])[:, None]
-    return np.any(within & (sign * (f[..., 2] - zv) < -1e-12), axis=1)
+def _dips(f, normal, on_plane, size):
+    """Lines with interior points on the wing's side of its tangent plane (the low-wing dip
+    of TM-4406), beyond 1e-9 of the line's chord."""
+    depth = -((f[:, 1:-1] - on_plane[:, None]) * normal[:, None]).sum(-1)
+    return np.any(depth > 1e-9 * size[:, None], axis=1)
 
 
-def _blended_parabolas(body, B, theta_b, sign, E, t_e, chord, s):
-    """Overhauser (blended parabolas) curve between B and E through neighbouring points.
+def _parabola_lengths(body, B, theta_b, sign, E, t_e, leg_b, leg_e, mag_b, mag_e, rows):
+    """Tangent lengths of the blended-parabolas curve (``remedy="parabolas"``).
 
-    P0 lies on the body circle beyond B (a further theta step away from the wing), P3 on the
-    lofting line beyond E; the curve on [B, E] blends the parabola through P0, B, E with the
-    parabola through B, E, P3 (Catmull-Rom form, uniform parameter).
+    The Overhauser curve through P0, B, E, P3 on [B, E] is the Hermite cubic with tangents
+    (E - P0) / 2 and (P3 - B) / 2. TM-4406 takes P0 and P3 on the body and on the lofting
+    line; the tangent at B is then off the circle's (by 36 deg on the issue's example). Here
+    P0 and P3 are moved onto the end tangents at the same distances from E and from B, and
+    the lengths limited to the longest legs (P1 and P2 each at least half-way along them).
     """
-    step = np.radians(10.0) * sign
-    P0 = body.point(B[:, 0], theta_b + step)
+    P0 = body.point(B[:, 0], theta_b + np.radians(10.0) * sign)
+    chord = np.linalg.norm(E - B, axis=1)
     P3 = E + t_e * chord[:, None]
-    s_ = np.asarray(s, float)[None, :, None]
-    return 0.5 * ((2 * B[:, None]) + (-P0 + E)[:, None] * s_
-                  + (2 * P0 - 5 * B + 4 * E - P3)[:, None] * s_ ** 2
-                  + (-P0 + 3 * B - 3 * E + P3)[:, None] * s_ ** 3)
+    len_b = 0.5 * np.linalg.norm(E - P0, axis=1)
+    len_e = 0.5 * np.linalg.norm(P3 - B, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        a_b = np.clip(len_b / (3.0 * leg_b), 0.5, 1.0)
+        a_e = np.clip(len_e / (3.0 * leg_e), 0.5, 1.0)
+    new_b = np.where(leg_b > 0, 3.0 * np.nan_to_num(a_b) * leg_b, 0.0)
+    new_e = np.where(leg_e > 0, 3.0 * np.nan_to_num(a_e) * leg_e, 0.0)
+    return np.where(rows, new_b, mag_b), np.where(rows, new_e, mag_e)
