@@ -167,3 +167,26 @@ def test_compensate_without_keep_area_is_a_usage_error(tmp_path, capsys):
     assert main(["complete", str(PDAS_DECK), "-o", str(tmp_path), "--fillet", "cubic",
                  "--compensate", "fillet"]) == 2
     assert "--compensate: only with --keep-area" in capsys.readouterr().err
+
+
+def test_cad_files_declare_the_units_given_and_an_unknown_one_is_refused_first(tmp_path, capsys):
+    pytest.importorskip("OCP")
+    from OCP.STEPControl import STEPControl_Reader
+
+    assert main(["complete", str(EXAMPLE_DECK), "-o", str(tmp_path / "a"), "--format", "step",
+                 "--units", "in", "-q"]) == 0
+    reader = STEPControl_Reader()
+    assert int(reader.ReadFile(str(tmp_path / "a" / "geometry.step"))) == 1
+    try:  # OCP 8.0
+        from OCP.collections import Sequence_TCollection_AsciiString as Names
+    except ImportError:  # OCP 7.9
+        from OCP.TColStd import TColStd_SequenceOfAsciiString as Names
+    length, angle, solid = Names(), Names(), Names()
+    reader.FileUnits(length, angle, solid)
+    found = {length.Value(i).ToCString().lower() for i in range(1, length.Length() + 1)}
+    assert found == {"inch"}
+    capsys.readouterr()
+    assert main(["complete", str(EXAMPLE_DECK), "-o", str(tmp_path / "b"), "--format", "wgs",
+                 "step", "--units", "furlong"]) == 2
+    assert "found 'furlong'" in capsys.readouterr().err
+    assert not (tmp_path / "b").exists()

@@ -132,17 +132,18 @@ def network_extensions():
     return [e for e in writer_extensions() if output_format(f"x.{e}") not in _COMPONENT_FORMATS]
 
 
-def write_outputs(cfg, geo, out, formats, fillet, keep_area):
+def write_outputs(cfg, geo, out, formats, fillet, keep_area, units="ft"):
     """The networks in every format asked (geometry.<ext>) and summary.json; returns the names
-    written."""
+    written. CAD files (STEP, IGES) declare ``units``."""
     from ..errors import MissingDependencyError
-    from ..io import atomic_output, write
+    from ..io import atomic_output, output_format, write
 
     written = []
     for fmt in formats:
         name = f"geometry.{fmt}"
+        cad = output_format(name) in ("step", "iges")
         try:
-            write(geo, out / name)
+            write(geo, out / name, **({"units": units} if cad else {}))
         except MissingDependencyError as exc:
             print(f"juncture: skipped {name}: {exc}", file=sys.stderr)
             continue
@@ -184,10 +185,14 @@ def write_report(cfg, geo, out, *, command, units, cases, mass=None):
 
 def complete(args, progress):
     from ..completion import complete as complete_
+    from ..io import output_format
+    from ..io._cad_write import cad_unit
 
     fillet = None if args.fillet == "none" else args.fillet
     opts = _complete_options(args, fillet)
     formats = _check_formats(args.format)
+    if any(output_format(f"x.{f}") in ("step", "iges") for f in formats):
+        cad_unit(args.units)  # refused before any work: a CAD file declares its unit
     report_steps = 2 + (fillet is not None) + (fillet is not None and args.keep_area)
     steps = 3 + args.figures + (report_steps if args.report else 0)
     with progress(steps, "complete") as bar:
@@ -197,7 +202,7 @@ def complete(args, progress):
         bar.step("complete")
         geo = complete_(cfg, fillet, args.keep_area, options=opts)
         bar.step("write " + " ".join(formats))
-        written = write_outputs(cfg, geo, out, formats, fillet, args.keep_area)
+        written = write_outputs(cfg, geo, out, formats, fillet, args.keep_area, args.units)
         if args.figures:
             from ..plots import write_figures
 

@@ -106,8 +106,9 @@ def _common():
 
 def _units(p):
     p.add_argument("--units", default="ft", metavar="LABEL",
-                   help="length unit written on figure axes and in the report (default: ft); "
-                   "a label only: coordinates are never converted")
+                   help="length unit of the deck (default: ft): written on figure axes, in "
+                   "the report, and declared in STEP/IGES files (mm, cm, m, km, in, ft, mi); "
+                   "coordinates are never converted")
 
 
 def _complete_parser(sub, common, extensions):

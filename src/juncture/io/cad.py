@@ -1,9 +1,10 @@
 """STEP and IGES output through OpenCASCADE (the optional ``cad`` extra, ``import OCP``).
 
-Formats (see ``formats.md``): STEP (ISO 10303-21, AP214 via ``STEPControl_Writer``) and IGES
-5.3 (``IGESControl_Writer``). Every network of a Geometry becomes one B-spline face,
-approximated through its points by ``GeomAPI_PointsToBSplineSurface`` (degree 3-8, C2, a
-tolerance of 1e-7 times the network's size); the faces go into one compound. Exact B-spline
+Formats (see ``formats.md``): STEP (ISO 10303-21, AP214 via ``STEPCAFControl_Writer``, one
+named product per component) and IGES 5.3 (``IGESControl_Writer``), in the length unit the
+user declares. Every network of a Geometry becomes one face that is exactly its bilinear
+quads (:mod:`juncture.io._cad_write`). :func:`network_face` (a smooth B-spline fitted through
+a network's points, for comparisons with OpenCASCADE) is kept for benchmarks. Exact B-spline
 patches (:class:`juncture.blend.bspline.BSplineSurface`) are written as they are by
 :func:`write_bspline_surfaces`.
 
@@ -26,10 +27,11 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..errors import GeometryError, JunctureError, MissingDependencyError
+from ._cad_write import CAD_UNITS
 from ._registry import atomic_output, register_format, to_geometry
 
-__all__ = ["write_step", "write_iges", "write_bspline_surfaces", "ocp_api", "network_face",
-           "section_points"]
+__all__ = ["CAD_UNITS", "write_step", "write_iges", "write_bspline_surfaces", "ocp_api",
+           "network_face", "section_points"]
 
 _INSTALL = "pip install juncture[cad]"
 
@@ -180,28 +182,13 @@ def _bspline_face(api, surf):
     return api.MakeFace(geom, 1e-9).Face()
 
 
-def _write_faces(api, faces, path, kind):
-    """Write faces as STEP or IGES to ``path`` atomically."""
+def _atomic_cad(path, kind, write_to):
+    """Call ``write_to(temporary file)`` (True when written), then put the file at ``path``
+    whole or not at all."""
     path = Path(path)
     with tempfile.TemporaryDirectory() as tmp:
         tmp_file = os.path.join(tmp, "out.step" if kind == "step" else "out.igs")
-        if kind == "step":
-            comp = api.Compound()
-            builder = api.Builder()
-            builder.MakeCompound(comp)
-            for face in faces:
-                builder.Add(comp, face)
-            writer = api.StepWriter()
-            writer.Transfer(comp, api.StepAsIs)
-            status = writer.Write(tmp_file)
-            ok = int(status) == 1
-        else:
-            writer = api.IgesWriter()
-            for face in faces:
-                writer.AddShape(face)
-            writer.ComputeModel()
-            ok = bool(writer.Write(tmp_file))
-        if not ok or not os.path.exists(tmp_file):
+        if not write_to(tmp_file) or not os.path.exists(tmp_file):
             raise JunctureError(f"OpenCASCADE failed to write {kind.upper()} file "
                                 f"{str(path)!r}")
         data = Path(tmp_file).read_bytes()
@@ -210,32 +197,79 @@ def _write_faces(api, faces, path, kind):
     return path
 
 
-def _write_geometry(obj, path, kind):
+def _write_faces(api, faces, path, kind):
+    """Write faces as STEP or IGES to ``path`` atomically."""
+    def write_to(tmp_file):
+        if kind == "step":
+            comp = api.Compound()
+            builder = api.Builder()
+            builder.MakeCompound(comp)
+            for face in faces:
+                builder.Add(comp, face)
+            writer = api.StepWriter()
+            writer.Transfer(comp, api.StepAsIs)
+            return int(writer.Write(tmp_file)) == 1
+        writer = api.IgesWriter()
+        for face in faces:
+            writer.AddShape(face)
+        writer.ComputeModel()
+        return bool(writer.Write(tmp_file))
+
+    return _atomic_cad(path, kind, write_to)
+
+
+def _write_geometry(obj, path, kind, units, mirror):
+    from ._cad_write import cad_unit, iges_model, step_document
+
+    cad_unit(units)  # a unit the file cannot declare is refused before OCP loads
     api = ocp_api()
     geometry = to_geometry(obj)
     if not geometry.networks:
         raise GeometryError(f"nothing to write to {kind.upper()}: the geometry has no "
                             "networks")
-    faces = [_network_face(api, name, net) for name, net in geometry.networks.items()]
-    return _write_faces(api, faces, path, kind)
+
+    def write_to(tmp_file):
+        if kind == "step":
+            from OCP.STEPCAFControl import STEPCAFControl_Writer
+
+            writer = STEPCAFControl_Writer()
+            writer.Transfer(step_document(api, geometry, units, mirror), api.StepAsIs)
+            return int(writer.Write(tmp_file)) == 1
+        writer = iges_model(api, geometry, units, mirror)
+        writer.ComputeModel()
+        return bool(writer.Write(tmp_file))
+
+    return _atomic_cad(path, kind, write_to)
 
 
-def write_step(obj, path, **kwargs):
-    """Write every network of ``obj`` (Geometry or dict of networks) as a STEP B-spline face.
+def write_step(obj, path, *, units="ft", mirror=True):
+    """Write ``obj`` (Geometry or dict of networks) as STEP (AP214): one product per component.
+
+    Each network is one face, the network's bilinear quads as a degree-1 B-spline (see
+    :mod:`juncture.io._cad_write`).
+
+    Parameters
+    ----------
+    units : str
+        The length unit the file declares (``"ft"`` default, ``"in"``, ``"m"``, ``"mm"``,
+        ``"cm"``, ``"km"``, ``"mi"``); coordinates are written as they are, never converted.
+    mirror : bool
+        Write the whole airplane (networks with a mirror plane and their images, default) or
+        only the networks as given (a half model).
 
     Raises
     ------
     MissingDependencyError
         Without OCP (``pip install juncture[cad]``).
-    GeometryError
-        If a network cannot be fitted.
+    JunctureError
+        For a unit a CAD file cannot declare.
     """
-    return _write_geometry(obj, path, "step")
+    return _write_geometry(obj, path, "step", units, mirror)
 
 
-def write_iges(obj, path, **kwargs):
-    """Write every network of ``obj`` as an IGES B-spline face (see :func:`write_step`)."""
-    return _write_geometry(obj, path, "iges")
+def write_iges(obj, path, *, units="ft", mirror=True):
+    """Write ``obj`` as IGES 5.3 faces in ``units`` (see :func:`write_step`)."""
+    return _write_geometry(obj, path, "iges", units, mirror)
 
 
 def write_bspline_surfaces(surfaces, path):
