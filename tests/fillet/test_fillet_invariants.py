@@ -132,19 +132,14 @@ def check_keep_area(text, desc):
     cfg = read_text(text)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        try:
-            geo = jc.complete(cfg, "cubic", keep_area=True)
-        except jc.GeometryError:
-            # Known, reported classes of the area iteration: fillets that change abruptly
-            # while an intersection crosses a bent section or a line grazes the body, and
-            # highly swept edges whose stations move faster than the body shrinks.
-            return
+        geo = jc.complete(cfg, "cubic", keep_area=True)
     st_ = geo.stations
     body0, body1 = cfg["body"], geo.configuration["body"]
     a0 = np.pi * body0.radius_at(st_["x"]) ** 2
     np.testing.assert_allclose(np.pi * st_["radius_new"] ** 2 + st_["area_fillet"], a0,
                                rtol=1e-8, atol=1e-9 * a0.max())
-    assert np.all(st_["area_fillet"] >= 0)
+    # A fillet only adds area (round-off where it is blended out to nothing).
+    assert np.all(st_["area_fillet"] >= -1e-12 * a0.max())
     xs = np.linspace(body0.x_global[0], body0.x_global[-1], 4001)
     assert np.all(body1.radius_at(xs) <= body0.radius_at(xs) + 1e-12 * desc["length"])
 
