@@ -179,8 +179,6 @@ def test_mirrored_pod_pair():
 @pytest.mark.parametrize("reverse", [False, True])
 def test_arbitrary_body_box_is_a_cuboid(reverse):
     """Half-section rectangle 0 <= y <= a, z0 - h <= z <= z0 + h: whole section 2a x 2h."""
-    # corners at arc-length fractions 0.3 and 0.7: on the 201-point resampling grid the model
-    # evaluates (ArbitraryBody.resample), so its polygon is exactly the rectangle
     a, h, z0, x0, length = 1.2, 0.8, 0.6, 3.0, 5.0
     half = np.array([[0.0, z0 - h], [a, z0 - h], [a, z0], [a, z0 + h], [0.0, z0 + h]])
     if reverse:
@@ -248,6 +246,27 @@ def test_circular_body_volume_against_adaptive_quadrature():
     vol = sum(integrate.quad(lambda s: float(b.area_at(s)), lo, hi, epsabs=0, epsrel=1e-13)[0]
               for lo, hi in zip(edges[:-1], edges[1:]))
     assert component_mass_properties(b).volume == pytest.approx(vol, rel=1e-12)
+
+
+def test_arbitrary_body_is_the_decks_polylines_not_a_resampling():
+    """Sections with corners at irrational arc-length fractions, unequal point counts and a
+    top point off the plane of symmetry: the volume is the integral of the exact polygon
+    area (adaptive quadrature of ``area_at``), and a frustum of trapezoids has its closed
+    form."""
+    rng = np.random.default_rng(3)
+    secs = [np.stack([rng.uniform(0.3, 2.0, k), np.sort(rng.uniform(-1.5, 1.5, k))], -1)
+            for k in (4, 7, 5, 3)]
+    b = ArbitraryBody("a", [0.0, 1.7, 4.2, 6.0], secs)
+    vol = sum(integrate.quad(lambda s: float(b.area_at(s)), lo, hi, epsabs=0, epsrel=1e-13)[0]
+              for lo, hi in zip(b.x[:-1], b.x[1:]))
+    assert component_mass_properties(b).volume == pytest.approx(vol, rel=1e-12)
+    # Trapezoid half-sections (0, -h) (w_b, -h) (w_t, h) (0, h), scaled by (1 + x / 4):
+    # whole area 2 h (w_b + w_t) (1 + x / 4)^2, volume over 0..4 = 2 h (w_b + w_t) 28 / 3.
+    w_b, w_t, h = 1.0, 0.4, 0.7
+    trap = np.array([[0.0, -h], [w_b, -h], [w_t, h], [0.0, h]])
+    t = ArbitraryBody("t", [0.0, 4.0], [trap, 2.0 * trap])
+    assert component_mass_properties(t).volume == pytest.approx(
+        2 * h * (w_b + w_t) * 28.0 / 3.0, rel=1e-13)
 
 
 def test_arbitrary_body_rule_is_exact():

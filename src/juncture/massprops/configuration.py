@@ -17,11 +17,13 @@ degree covers the integrand exactly (up to rounding):
   cubic (PCHIP) or linear between stations. Volume, first and second moments are integrals
   of ``pi r^2``, ``pi r^2 x``, ``pi r^2 z_c``, ``pi r^2 x^2``, ``pi r^2 z_c^2 + pi r^4 / 4``,
   ...: degree <= 12 in x on each station interval, 7 Gauss points (exact to degree 13).
-* **Arbitrary body**. The half-section at x is the polygon of the body's resampled points
-  (blended linearly in x between stations), closed by a straight line from its top point
-  back to its bottom point, as :meth:`ArbitraryBody.area_at` closes it. Polygon area and
-  moments (Green's theorem) are polynomials of degree <= 2, 3, 4 in the vertex coordinates,
-  hence <= 4 in x with the x weights: 3 Gauss points per interval (exact to degree 5).
+* **Arbitrary body**. The half-section at x is the deck's polyline (its points joined by
+  straight lines, blended linearly in x between stations: :class:`ArbitraryBody`, nothing
+  resampled), closed across the plane of symmetry (top point to (0, z_top), down y = 0 to
+  (0, z_bottom), back to the bottom point), as :meth:`ArbitraryBody.area_at` closes it.
+  Polygon area and moments (Green's theorem) are polynomials of degree <= 2, 3, 4 in the
+  vertex coordinates, hence <= 4 in x with the x weights: 3 Gauss points per interval
+  (exact to degree 5).
 
 Halves and images (``Configuration.symmetric`` true, as every wave-drag deck): a
 ``mirrored`` component contributes itself plus its mirror image in the x-z plane; a centre-line
@@ -150,11 +152,12 @@ def _arbitrary_unit(b, whole=True, n=None):
     n = GAUSS_POINTS["arbitrary"] if n is None else n
     edges = np.unique(b.x)
     xq, wq = _on_intervals(edges, n)
-    u = np.linspace(0.0, 1.0, b.resample)
-    pts = b.point(xq[:, None], u[None, :])                              # (Q, R, 3)
-    ref = np.array([edges[0], 0.0, float(pts[..., 2].mean())])          # y ref on the plane
-    y, z = pts[..., 1], pts[..., 2] - ref[2]
-    y1, z1 = np.roll(y, -1, axis=-1), np.roll(z, -1, axis=-1)           # closes top -> bottom
+    sec = b._sections_at(xq)                                            # (Q, M, 2), exact
+    axis = np.stack([np.zeros_like(sec[:, [-1, 0], 0]), sec[:, [-1, 0], 1]], axis=-1)
+    sec = np.concatenate([sec, axis], axis=1)           # closed through (0, z_top), (0, z_bot)
+    ref = np.array([edges[0], 0.0, float(sec[..., 1].mean())])          # y ref on the plane
+    y, z = sec[..., 0], sec[..., 1] - ref[2]
+    y1, z1 = np.roll(y, -1, axis=-1), np.roll(z, -1, axis=-1)
     cr = y * z1 - y1 * z
     a = 0.5 * cr.sum(-1)
     sign = np.where(a < 0, -1.0, 1.0)                                   # either point order
