@@ -27,6 +27,22 @@ def test_json_round_trip_is_exact(tmp_path):
             np.testing.assert_array_equal(a, b)
 
 
+@pytest.mark.parametrize("deck", ["two_configurations_canard_signs.inp",
+                                  "two_configurations_four_canard_sets.inp"])
+def test_deck_json_deck_keeps_the_control_card_j6(tmp_path, deck):
+    """J6 = 1 (X-Y symmetry) and J6 = -1 survive deck -> JSON -> deck (the JSON model says
+    ``xy_symmetric``); compared on the control card's field (columns 19-21)."""
+    from tests.support import DATA
+
+    src = DATA / "decks" / deck
+    jc.write(jc.read(src), tmp_path / "m.json")
+    jc.write(jc.read(tmp_path / "m.json"), tmp_path / "back.inp")
+    j6 = [p.read_text().splitlines()[1][18:21] for p in (src, tmp_path / "back.inp")]
+    assert j6[0] == j6[1]
+    assert json.loads((tmp_path / "m.json").read_text()).get("xy_symmetric", False) == (
+        j6[0].strip() == "1")
+
+
 def test_toml_reads_the_same_model(tmp_path):
     toml = tmp_path / "w.toml"
     toml.write_text('juncture = 1\ntitle = "plate"\n[[components]]\nname = "wing"\n'

@@ -30,6 +30,7 @@ from ._deck import (
     DeckPod,
     DeckWing,
 )
+from .jsonmodel import xy_symmetric
 
 __all__ = ["deck_to_configuration", "configuration_to_deck"]
 
@@ -287,7 +288,7 @@ def configuration_to_deck(cfg):
                                                              f.outboard) for f in raw_fins]
     raw_cans = _common_canard_sets(raw_cans)
 
-    sc = src.control if src is not None else ControlCard()
+    sc = src.control if src is not None else ControlCard(j6=1 if xy_symmetric(cfg) else 0)
     nwafor = 0
     if wing is not None:
         n = wing.xaf.size

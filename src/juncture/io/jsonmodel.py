@@ -21,7 +21,8 @@ from ..model import ArbitraryBody, CircularBody, Configuration, WingLike
 from ._deck import CASE_FIELDS, DeckCase
 from ._registry import atomic_output, read_input, register_format, require_configuration
 
-__all__ = ["read", "write", "configuration_from_dict", "configuration_to_dict", "ModelSource"]
+__all__ = ["read", "write", "configuration_from_dict", "configuration_to_dict", "ModelSource",
+           "xy_symmetric"]
 
 _EXPECTED = "juncture model (JSON or TOML, docs/model-format.md)"
 
@@ -36,10 +37,14 @@ class ModelSource:
         The wave-drag case cards the model carries (written back by the deck writer).
     path : str or None
         The file read.
+    xy_symmetric : bool
+        The deck's J6 = 1: the whole configuration is symmetric about the X-Y plane (written
+        back by the deck writer).
     """
 
     cases: tuple = ()
     path: str | None = None
+    xy_symmetric: bool = False
 
 FORMAT_VERSION = 1
 _WING_TYPES = ("wing", "canard", "tail", "fin", "pylon")
@@ -195,8 +200,8 @@ def configuration_from_dict(data, path=None):
     """
     if not isinstance(data, dict):
         raise SpecError(f"the model must be an object, found {type(data).__name__}")
-    _known(data, {"juncture", "title", "reference", "symmetric", "components", "cases"},
-           "model")
+    _known(data, {"juncture", "title", "reference", "symmetric", "xy_symmetric", "components",
+                  "cases"}, "model")
     version = _get(data, "juncture", "model", int)
     if version != FORMAT_VERSION:
         raise SpecError(f"model: format version {version} is not supported (expected "
@@ -218,7 +223,8 @@ def configuration_from_dict(data, path=None):
                          reference_area=ref.get("area"), reference_chord=ref.get("chord"),
                          moment_x=ref.get("moment_x"),
                          symmetric=_get(data, "symmetric", "model", bool, True),
-                         source=ModelSource(cases, None if path is None else str(path)))
+                         source=ModelSource(cases, None if path is None else str(path),
+                                            _get(data, "xy_symmetric", "model", bool, False)))
 
 
 def _lst(a):
@@ -252,10 +258,19 @@ def configuration_to_dict(cfg):
                              ("moment_x", cfg.moment_x)) if v is not None}
     out = {"juncture": FORMAT_VERSION, "title": cfg.title, "reference": ref,
            "symmetric": cfg.symmetric, "components": comps}
+    if xy_symmetric(cfg):
+        out["xy_symmetric"] = True
     cases = getattr(cfg.source, "cases", None) or ()
     if cases:
         out["cases"] = [_case_dict(c) for c in cases]
     return out
+
+
+def xy_symmetric(cfg):
+    """Whether ``cfg`` came from a deck (or model) that declares X-Y symmetry (J6 = 1)."""
+    src = cfg.source
+    control = getattr(src, "control", None)
+    return bool(getattr(src, "xy_symmetric", False) or getattr(control, "j6", 0) == 1)
 
 
 def read(path):
