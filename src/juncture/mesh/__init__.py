@@ -1,0 +1,1 @@
+"""Meshes of the completed airplane: assembly of the networks into one surface, checks."""

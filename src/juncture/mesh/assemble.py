@@ -1,0 +1,264 @@
+"""One triangulated surface of a completed airplane, assembled from its networks.
+
+The networks' quads are split into triangles along their shorter diagonal; vertices are
+shared where coordinates are **bit-identical** (never by a welding tolerance: a seam closes
+only where both networks carry the same points, as juncture's layouts make them), and
+triangles that collapse (two equal corners) are dropped. What is left open is then looked at
+loop by loop: a boundary loop that lies in one plane (a wing or fin tip, a blunt base, a
+nacelle's open end) is capped by a triangulation of the plane polygon, oriented against the
+loop so the surface stays consistently oriented; a loop that does not (a seam whose two sides
+differ) stays open and is reported, so that a caller never gets a surface closed by guesswork.
+
+Orientation follows the networks' (``docs/conventions.md``: outward normals); the enclosed
+volume is the divergence-theorem sum over the triangles, the wetted area the sum of their
+areas per component, caps excluded.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["SurfaceMesh", "assemble", "boundary_loops", "cap_polygon"]
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class SurfaceMesh:
+    """A triangulated surface with a component and a surface (network) id per triangle.
+
+    Attributes
+    ----------
+    vertices : (n, 3) float
+    triangles : (m, 3) int
+        Vertex ids, counter-clockwise seen from outside.
+    component : (m,) int
+        Index into ``components`` (caps carry their loop's component).
+    surface : (m,) int
+        Index into ``surfaces``: the network a triangle comes from, or a cap.
+    components, surfaces : tuple of str
+    open_loops : tuple of (k,) int arrays
+        Boundary loops left open (not planar), as vertex ids.
+    """
+
+    vertices: np.ndarray
+    triangles: np.ndarray
+    component: np.ndarray
+    surface: np.ndarray
+    components: tuple
+    surfaces: tuple
+    open_loops: tuple = ()
+
+    def volume(self):
+        """Enclosed volume (divergence theorem; > 0 for an outward-oriented closed surface)."""
+        p = self.vertices[self.triangles]
+        return float(np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0)
+
+    def areas(self):
+        """(m,) triangle areas."""
+        p = self.vertices[self.triangles]
+        return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+
+    def wetted_area(self):
+        """{component: area of its triangles, caps excluded} and ``"total"``."""
+        a = self.areas()
+        real = ~np.array([s.endswith(" cap") for s in self.surfaces])[self.surface]
+        out = {name: float(a[(self.component == k) & real].sum())
+               for k, name in enumerate(self.components)}
+        out["total"] = float(sum(out.values()))
+        return out
+
+
+def _owner(name, components):
+    base = name[:-len(" image")] if name.endswith(" image") else name
+    return next((c for c in components if base == c or base.startswith(c + " ")), base)
+
+
+def _quad_triangles(n, m, pts):
+    """(2 (n-1)(m-1), 3) local ids: each quad split along its shorter diagonal, oriented as
+    the networks are (``cross(d/d point, d/d line)`` outward: (i, j) -> (i, j+1) ->
+    (i+1, j+1) -> (i+1, j), i the line and j the point)."""
+    i, j = np.meshgrid(np.arange(n - 1), np.arange(m - 1), indexing="ij")
+    a, b = (i * m + j).ravel(), ((i + 1) * m + j).ravel()
+    c, d = ((i + 1) * m + j + 1).ravel(), (i * m + j + 1).ravel()
+    flat = pts.reshape(-1, 3)
+    ac = np.linalg.norm(flat[a] - flat[c], axis=1)
+    bd = np.linalg.norm(flat[b] - flat[d], axis=1)
+    use_ac = (ac <= bd)[:, None]
+    t1 = np.where(use_ac, np.stack([a, c, b], 1), np.stack([a, d, b], 1))
+    t2 = np.where(use_ac, np.stack([a, d, c], 1), np.stack([b, d, c], 1))
+    return np.concatenate([t1, t2])
+
+
+def _merge(points):
+    """Ids of bit-identical points (-0.0 counts as 0.0): (unique points, inverse)."""
+    p = np.ascontiguousarray(np.asarray(points, float) + 0.0)
+    keys = p.view(np.dtype((np.void, p.dtype.itemsize * 3))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    return p[first], inverse.ravel()
+
+
+def boundary_loops(triangles):
+    """Closed loops of directed boundary edges (edges with no opposite), as vertex-id arrays.
+
+    Each loop runs along its triangles' edges (so a cap must run the other way). Vertices
+    with more than one outgoing boundary edge are followed in input order; a chain that does
+    not close is returned as it is.
+    """
+    e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    key = e[:, 0].astype(np.int64) * (int(e.max()) + 1) + e[:, 1]
+    rev = e[:, 1].astype(np.int64) * (int(e.max()) + 1) + e[:, 0]
+    boundary = e[~np.isin(key, rev)]
+    nxt = {}
+    for a, b in boundary.tolist():  # construction over the boundary only
+        nxt.setdefault(a, []).append(b)
+    loops = []
+    while nxt:
+        start = next(iter(nxt))
+        loop, v = [start], start
+        while True:
+            outs = nxt.get(v)
+            if not outs:
+                break
+            w = outs.pop(0)
+            if not outs:
+                del nxt[v]
+            if w == start:
+                break
+            loop.append(w)
+            v = w
+        loops.append(np.array(loop))
+    return loops
+
+
+def _plane(points):
+    """(centre, unit normal, in-plane axes (2, 3), largest distance from the plane)."""
+    c = points.mean(axis=0)
+    _, s, vt = np.linalg.svd(points - c)
+    dist = np.abs((points - c) @ vt[2]).max()
+    return c, vt[2], vt[:2], float(dist)
+
+
+def cap_polygon(uv):
+    """Triangles (k - 2, 3) of a simple polygon uv (k, 2) (either orientation), by ear
+    clipping that takes, at each step, the ear with the largest smallest angle."""
+    idx = list(range(len(uv)))
+    area = 0.5 * np.sum(uv[:, 0] * np.roll(uv[:, 1], -1) - np.roll(uv[:, 0], -1) * uv[:, 1])
+    sgn = 1.0 if area >= 0 else -1.0
+    out = []
+    while len(idx) > 3:
+        k = len(idx)
+        best, best_q = None, -1.0
+        for t in range(k):
+            a, b, c = idx[t - 1], idx[t], idx[(t + 1) % k]
+            pa, pb, pc = uv[a], uv[b], uv[c]
+            cross = sgn * ((pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]))
+            if cross <= 0:
+                continue
+            others = uv[[i for i in idx if i not in (a, b, c)]]
+            if others.size and _inside(others, pa, pb, pc, sgn).any():
+                continue
+            q = _min_angle(pa, pb, pc)
+            if q > best_q:
+                best, best_q = t, q
+        if best is None:  # numerically degenerate remainder: fan it
+            best = 0
+        a, b, c = idx[best - 1], idx[best], idx[(best + 1) % k]
+        out.append((a, b, c))
+        idx.pop(best)
+    out.append(tuple(idx))
+    return np.array(out, int)
+
+
+def _inside(p, a, b, c, sgn):
+    def side(u, v):
+        return sgn * ((v[0] - u[0]) * (p[:, 1] - u[1]) - (v[1] - u[1]) * (p[:, 0] - u[0]))
+    return (side(a, b) >= 0) & (side(b, c) >= 0) & (side(c, a) >= 0)
+
+
+def _min_angle(a, b, c):
+    def ang(p, q, r):
+        u, v = q - p, r - p
+        den = np.linalg.norm(u) * np.linalg.norm(v)
+        return np.arccos(np.clip(u @ v / den, -1.0, 1.0)) if den > 0 else 0.0
+    return min(ang(a, b, c), ang(b, c, a), ang(c, a, b))
+
+
+def _caps(vertices, triangles, tol):
+    """Cap triangles for every planar boundary loop, and the loops left open."""
+    caps, where, open_ = [], [], []
+    for loop in boundary_loops(triangles):
+        pts = vertices[loop]
+        if len(loop) < 3:
+            open_.append(loop)
+            continue
+        c, _, axes, dist = _plane(pts)
+        if dist > tol:
+            open_.append(loop)
+            continue
+        tri = loop[cap_polygon((pts - c) @ axes.T)]
+        # The cap runs against the loop: flip where it runs with it.
+        if _runs_with(tri, loop):
+            tri = tri[:, ::-1]
+        caps.append(tri)
+        where.append(loop[0])
+    return caps, where, open_
+
+
+def _runs_with(tri, loop):
+    """Whether the cap's triangles use the loop's directed edges (they must use the reverse)."""
+    edges = {(int(a), int(b)) for a, b in zip(loop, np.roll(loop, -1))}
+    used = {(int(t[i]), int(t[(i + 1) % 3])) for t in tri for i in range(3)}
+    return len(edges & used) > len(edges) // 2
+
+
+def assemble(geometry, mirror=True, cap=True):
+    """The networks of ``geometry`` as one :class:`SurfaceMesh` (see the module docstring).
+
+    Parameters
+    ----------
+    geometry : Geometry
+    mirror : bool
+        Both halves (networks with a mirror plane and their images; default) or the networks
+        as given.
+    cap : bool
+        Cap planar boundary loops (tips, blunt bases, open nacelle ends).
+    """
+    nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
+    cfg = geometry.configuration
+    comps = sorted(getattr(cfg, "components", None) or (), key=len, reverse=True)
+    owners = [_owner(name, comps) for name in nets]
+    components = tuple(dict.fromkeys(owners))
+    pts, tris, comp_id, surf_id, offset = [], [], [], [], 0
+    for k, net in enumerate(nets.values()):
+        net = np.asarray(net, float)
+        n, m = net.shape[:2]
+        t = _quad_triangles(n, m, net) + offset
+        pts.append(net.reshape(-1, 3))
+        tris.append(t)
+        comp_id.append(np.full(len(t), components.index(owners[k])))
+        surf_id.append(np.full(len(t), k))
+        offset += n * m
+    vertices, inverse = _merge(np.concatenate(pts))
+    triangles = inverse[np.concatenate(tris)]
+    component, surface = np.concatenate(comp_id), np.concatenate(surf_id)
+    keep = (triangles[:, 0] != triangles[:, 1]) & (triangles[:, 1] != triangles[:, 2]) & \
+        (triangles[:, 2] != triangles[:, 0])
+    triangles, component, surface = triangles[keep], component[keep], surface[keep]
+    surfaces = tuple(nets)
+    open_loops = ()
+    if cap:
+        size = float(np.ptp(vertices, axis=0).max()) or 1.0
+        caps, where, open_loops = _caps(vertices, triangles, 1e-9 * size)
+        vertex_comp = np.zeros(len(vertices), int)
+        vertex_comp[triangles.ravel()] = np.repeat(component, 3)
+        for tri, v in zip(caps, where):
+            c = int(vertex_comp[v])
+            name = f"{components[c]} cap"
+            if name not in surfaces:
+                surfaces += (name,)
+            triangles = np.concatenate([triangles, tri])
+            component = np.concatenate([component, np.full(len(tri), c)])
+            surface = np.concatenate([surface, np.full(len(tri), surfaces.index(name))])
+    return SurfaceMesh(vertices, triangles, component, surface, components, surfaces,
+                       tuple(open_loops))

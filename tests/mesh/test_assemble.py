@@ -1,0 +1,86 @@
+"""Assembling networks into one surface: shared ids only where points are bit-identical,
+planar loops capped, the rest reported open (checked with trimesh and closed forms)."""
+
+import numpy as np
+import pytest
+
+from juncture.geometry import Geometry
+from juncture.mesh.assemble import assemble, cap_polygon
+
+
+def _prism(n_theta=24, n_x=7, length=5.0, radius=1.5, mirror=False):
+    """A polygonal cylinder as one network (x lines around, outward), open at both ends;
+    as two half networks with an x-z mirror image when ``mirror``."""
+    x = np.linspace(0.0, length, n_x)
+    if mirror:  # the y >= 0 half, bottom to top; its image closes the other side
+        th = np.linspace(-np.pi / 2, np.pi / 2, n_theta // 2 + 1)
+    else:
+        th = np.linspace(0.0, 2 * np.pi, n_theta + 1)
+    pts = np.stack(np.broadcast_arrays(x[:, None], radius * np.cos(th)[None, :],
+                                       radius * np.sin(th)[None, :]), -1)
+    if mirror:
+        pts[:, [0, -1], 1] = 0.0  # on the plane of symmetry exactly, as the image's points
+    else:
+        pts[:, -1] = pts[:, 0]  # the seam repeats the first line bit for bit
+    return pts
+
+
+def _polygon_area(n, r):
+    return 0.5 * n * r * r * np.sin(2 * np.pi / n)
+
+
+@pytest.mark.parametrize("mirror", [False, True])
+def test_a_capped_prism_is_closed_and_has_the_prism_volume(mirror):
+    import trimesh
+
+    net = _prism(mirror=mirror)
+    geo = Geometry({"pod": net}, symmetry={"pod": "xz"} if mirror else {})
+    mesh = assemble(geo)
+    assert mesh.open_loops == ()
+    tm = trimesh.Trimesh(mesh.vertices, mesh.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    exact = _polygon_area(24, 1.5) * 5.0
+    assert mesh.volume() == pytest.approx(exact, rel=1e-13)
+    assert tm.volume == pytest.approx(exact, rel=1e-13)
+    moved = Geometry({"pod": net + [3.0, -7.0, 11.0]},
+                     symmetry={"pod": "xz"} if mirror else {})
+    if not mirror:
+        assert assemble(moved).volume() == pytest.approx(exact, rel=1e-12)
+    wet = mesh.wetted_area()
+    side = 24 * 2 * 1.5 * np.sin(np.pi / 24) * 5.0
+    assert wet["pod"] == pytest.approx(side, rel=1e-13) and wet["total"] == wet["pod"]
+
+
+def test_points_that_differ_in_the_last_bit_are_not_welded():
+    net = _prism()
+    net[:, -1] = np.nextafter(net[:, 0], np.inf)  # the seam is off by one ulp
+    mesh = assemble(Geometry({"pod": net}))
+    # The seam's two sides stay open, not welded: one loop around both (through the ends,
+    # which are then no plane loops and stay open too).
+    assert len(mesh.open_loops) == 1
+    assert mesh.open_loops[0].size == 2 * 7 + 2 * 23  # both seam lines, both rings
+
+
+def test_a_non_planar_open_loop_is_reported_not_filled():
+    net = _prism()
+    net[-1, :, 0] += 0.2 * np.sin(3 * np.linspace(0, 2 * np.pi, net.shape[1]))  # warped end
+    net[-1, -1] = net[-1, 0]
+    mesh = assemble(Geometry({"pod": net}))
+    assert len(mesh.open_loops) == 1
+    assert mesh.open_loops[0].size == 24
+
+
+def test_cap_polygon_triangulates_a_non_convex_polygon_inside_it():
+    rng = np.random.default_rng(4)
+    k = 40
+    th = np.sort(rng.uniform(0, 2 * np.pi, k))
+    r = 1.0 + 0.5 * rng.random(k)
+    uv = np.stack([r * np.cos(th), r * np.sin(th)], 1)
+    tri = cap_polygon(uv)
+    assert tri.shape == (k - 2, 3)
+    a = uv[tri]
+    signed = 0.5 * ((a[:, 1, 0] - a[:, 0, 0]) * (a[:, 2, 1] - a[:, 0, 1])
+                    - (a[:, 1, 1] - a[:, 0, 1]) * (a[:, 2, 0] - a[:, 0, 0]))
+    area = 0.5 * np.sum(uv[:, 0] * np.roll(uv[:, 1], -1) - np.roll(uv[:, 0], -1) * uv[:, 1])
+    assert np.all(signed > 0)  # same orientation as the polygon: no folded triangle
+    assert signed.sum() == pytest.approx(area, rel=1e-12)  # covers it exactly once
