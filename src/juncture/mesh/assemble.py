@@ -6,8 +6,11 @@ only where both networks carry the same points, as juncture's layouts make them)
 triangles that collapse (two equal corners) are dropped. What is left open is then looked at
 loop by loop: a boundary loop that lies in one plane (a wing or fin tip, a blunt base, a
 nacelle's open end) is capped by a triangulation of the plane polygon, oriented against the
-loop so the surface stays consistently oriented; a loop that does not (a seam whose two sides
-differ) stays open and is reported, so that a caller never gets a surface closed by guesswork.
+loop so the surface stays consistently oriented; a loop made of two chains that pair up point
+by point within a few per cent of its length (a blunt trailing edge between the upper and the
+lower surface's last lines) is closed by the ruled strip between them; any other loop (a seam
+whose two sides differ) stays open and is reported, so that a caller never gets a surface
+closed by guesswork.
 
 Orientation follows the networks' (``docs/conventions.md``: outward normals); the enclosed
 volume is the divergence-theorem sum over the triangles, the wetted area the sum of their
@@ -20,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SurfaceMesh", "assemble", "boundary_loops", "cap_polygon"]
+__all__ = ["SurfaceMesh", "assemble", "boundary_loops", "cap_polygon", "strip_cap"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -184,8 +187,81 @@ def _min_angle(a, b, c):
     return min(ang(a, b, c), ang(b, c, a), ang(c, a, b))
 
 
+#: A loop is capped by a strip when its two halves pair up within this share of its length.
+STRIP_SHARE = 0.05
+
+
+def _corners(p):
+    """The two vertices of a closed polyline p (k, 3) where it turns back most sharply,
+    at least two apart along it."""
+    d_in = p - np.roll(p, 1, axis=0)
+    d_out = np.roll(p, -1, axis=0) - p
+    cos = (d_in * d_out).sum(1) / np.maximum(
+        np.linalg.norm(d_in, axis=1) * np.linalg.norm(d_out, axis=1), 1e-300)
+    order = np.argsort(cos)  # most negative: turning back
+    first = int(order[0])
+    k = len(p)
+    for j in order[1:]:
+        if min(abs(int(j) - first), k - abs(int(j) - first)) >= 2:
+            return first, int(j)
+    return None
+
+
+def _zip_chains(pa, pb):
+    """Triangles (local: 'a' ids 0..n-1, 'b' ids n..n+m-1) of the strip between two polylines
+    from a common start to a common end side: advance on the chain whose next diagonal is
+    shorter."""
+    n, m = len(pa), len(pb)
+    i = j = 0
+    out = []
+    while i < n - 1 or j < m - 1:
+        if j == m - 1 or (i < n - 1 and np.linalg.norm(pa[i + 1] - pb[j])
+                          <= np.linalg.norm(pa[i] - pb[j + 1])):
+            out.append((i, i + 1, n + j))
+            i += 1
+        else:
+            out.append((i, n + j + 1, n + j))
+            j += 1
+    return np.array(out, int)
+
+
+def strip_cap(vertices, loop):
+    """Triangles of a ruled strip closing a thin loop (a blunt trailing edge between the
+    upper and the lower surface's last lines), or None.
+
+    The loop is split at the two vertices where it turns back most sharply into two chains
+    from one to the other; the strip between them is zipped (the shorter diagonal first). It
+    is taken only when every point of each chain lies within ``STRIP_SHARE`` of the loop's
+    length of the other chain's points. Oriented against the loop; triangles with a
+    repeated corner are dropped.
+    """
+    k = len(loop)
+    if k < 4:
+        return None
+    p = vertices[loop]
+    length = np.linalg.norm(p - np.roll(p, -1, axis=0), axis=1).sum()
+    corners = _corners(p)
+    if corners is None:
+        return None
+    c0, c1 = sorted(corners)
+    a = loop[c0:c1 + 1]                                   # along the loop
+    b = np.concatenate([loop[c0::-1], loop[:c1 - 1:-1]])  # against it, c0 -> c1
+    b = b[:np.flatnonzero(b == loop[c1])[0] + 1]
+    gap = np.linalg.norm(vertices[a][:, None] - vertices[b][None, :], axis=2)
+    if max(gap.min(1).max(), gap.min(0).max()) > STRIP_SHARE * length:
+        return None
+    local = _zip_chains(vertices[a], vertices[b])
+    ids = np.concatenate([a, b])
+    tri = ids[local]
+    # The loop runs a_i -> a_i+1: the cap must use a_i+1 -> a_i, as (a_i+1, a_i, b_j) does.
+    tri = tri[:, ::-1]
+    ok = (tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 2] != tri[:, 0])
+    return tri[ok]
+
+
 def _caps(vertices, triangles, tol):
-    """Cap triangles for every planar boundary loop, and the loops left open."""
+    """Cap triangles for every planar boundary loop and every thin strip, and the loops left
+    open."""
     caps, where, open_ = [], [], []
     for loop in boundary_loops(triangles):
         pts = vertices[loop]
@@ -194,7 +270,12 @@ def _caps(vertices, triangles, tol):
             continue
         c, _, axes, dist = _plane(pts)
         if dist > tol:
-            open_.append(loop)
+            strip = strip_cap(vertices, loop)
+            if strip is None:
+                open_.append(loop)
+            else:
+                caps.append(strip)
+                where.append(loop[0])
             continue
         tri = loop[cap_polygon((pts - c) @ axes.T)]
         # The cap runs against the loop: flip where it runs with it.
