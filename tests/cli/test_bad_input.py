@@ -62,7 +62,8 @@ def corpus(tmp_path_factory):
 # Inputs each command accepts; every other corpus entry must be refused in one line.
 ACCEPTS = {"info": {"lawgs", "deck", "model"}, "convert": {"lawgs", "deck", "model"},
            "complete": {"deck", "model"}, "wavedrag": {"deck", "model"},
-           "massprops": {"deck", "model", "mass spec"}, "blend": {"blend spec"}}
+           "massprops": {"deck", "model", "mass spec"}, "blend": {"blend spec"},
+           "mesh": {"deck", "model"}}
 NAMES = ["missing", "directory", "empty", "binary", "png", "blank lines", "deck cut at 5%",
          "deck cut at 30%", "deck cut at 60%", "deck cut at 90%", "deck cut mid-field",
          "model cut", "json list", "mass spec cut", "blend spec cut", "lawgs", "mass spec",
@@ -72,7 +73,8 @@ NAMES = ["missing", "directory", "empty", "binary", "png", "blank lines", "deck 
 def _argv(command, path, out):
     return {"info": ["info", path], "convert": ["convert", path, str(out / "x.wgs")],
             "complete": ["complete", path, "-o", str(out)], "wavedrag": ["wavedrag", path],
-            "massprops": ["massprops", path], "blend": ["blend", path, "-o", str(out)]}[command]
+            "massprops": ["massprops", path], "blend": ["blend", path, "-o", str(out)],
+            "mesh": ["mesh", path, "-o", str(out)]}[command]
 
 
 def _one_line(capsys):
@@ -113,6 +115,7 @@ def _file(tmp_path):
     ["complete", str(EXAMPLE_DECK), "-o", "{file}/sub"],
     ["wavedrag", str(PDAS_DECK), "-o", "{file}"],
     ["blend", str(BLEND_SPEC), "-o", "{file}"],
+    ["mesh", str(PDAS_DECK), "-o", "{file}"],
     ["demo", "-o", "{file}"],
 ])
 def test_unwritable_or_unknown_outputs_are_one_line(tmp_path, capsys, argv):

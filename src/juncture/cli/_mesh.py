@@ -1,0 +1,59 @@
+"""``juncture mesh``: one closed triangulated surface of the completed airplane."""
+
+from __future__ import annotations
+
+__all__ = ["add_parser", "run"]
+
+_FORMATS = ("stl", "msh", "vtu")
+
+
+def add_parser(sub, common):
+    """The ``mesh`` sub-command's parser."""
+    s = sub.add_parser("mesh", parents=[common],
+                       help="one closed, oriented triangulated surface of the completed airplane")
+    s.add_argument("deck", help="wave-drag deck or juncture JSON/TOML model")
+    s.add_argument("-o", "--output", default="juncture-mesh",
+                   help="output directory (default: juncture-mesh)")
+    s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
+                   help="wing-body fillet (default: none)")
+    s.add_argument("--keep-area", action="store_true",
+                   help="re-design the fuselage at fixed area (needs --fillet)")
+    s.add_argument("--format", nargs="+", default=["stl"], choices=_FORMATS, metavar="EXT",
+                   help=f"mesh formats (default: stl); one or more of {', '.join(_FORMATS)}")
+    s.add_argument("--ascii", action="store_true",
+                   help="ASCII STL with one named solid per component (default: binary)")
+    return s
+
+
+def run(args, progress):
+    """Complete, assemble, check; write only a mesh that is closed and oriented."""
+    from ..completion import complete
+    from ..mesh.assemble import assemble
+    from ..mesh.quality import summarize
+    from ..mesh.write import write_mesh
+    from ._commands import _complete_options, output_dir, read_configuration
+    from ._parser import COMPLETE_FLAGS, fail
+
+    fillet = None if args.fillet == "none" else args.fillet
+    for dest in COMPLETE_FLAGS:  # complete's fillet options keep their defaults here
+        if not hasattr(args, dest):
+            setattr(args, dest, None)
+    opts = _complete_options(args, fillet)
+    with progress(3, "mesh") as bar:
+        bar.step("read and complete")
+        cfg = read_configuration(args.deck, "mesh")
+        geo = complete(cfg, fillet, args.keep_area, options=opts)
+        bar.step("assemble")
+        mesh = assemble(geo)
+        summary = summarize(mesh)
+        if not summary.closed or summary.open_loops:
+            fail("the completed surface is not closed, so no mesh was written: "
+                 + "; ".join(line[6:] for line in summary.lines() if line.startswith("FAIL")))
+        bar.step("write " + " ".join(args.format))
+        out = output_dir(args.output)
+        written = [write_mesh(mesh, out / f"mesh.{ext}", ascii=args.ascii).name
+                   for ext in args.format]
+    if not getattr(args, "quiet", False):
+        print("\n".join(summary.lines()))
+        print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
+    return 0

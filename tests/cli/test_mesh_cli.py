@@ -1,0 +1,29 @@
+"""``juncture mesh``: writes only a closed, oriented surface (checked by trimesh)."""
+
+import pytest
+
+from juncture.cli import main
+from tests.support import EXAMPLE_DECK, PDAS_DECK
+
+
+@pytest.mark.parametrize("fillet", ["none", "cubic"])
+def test_the_sample_wing_body_is_written_closed(tmp_path, capsys, fillet):
+    import meshio
+    import trimesh
+
+    args = ["mesh", str(PDAS_DECK), "-o", str(tmp_path), "--fillet", fillet,
+            "--format", "stl", "msh"]
+    assert main(args + (["--keep-area"] if fillet != "none" else [])) == 0
+    out = capsys.readouterr().out
+    assert "enclosed volume" in out and "FAIL" not in out
+    tm = trimesh.load(tmp_path / "mesh.stl")
+    assert tm.is_watertight and tm.is_winding_consistent and tm.volume > 0
+    msh = meshio.read(tmp_path / "mesh.msh")
+    assert len(msh.cells_dict["triangle"]) == len(tm.faces)
+
+
+def test_an_airplane_whose_seams_do_not_close_gets_no_mesh_and_one_line(tmp_path, capsys):
+    assert main(["mesh", str(EXAMPLE_DECK), "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "not closed, so no mesh was written" in err[0]
+    assert not (tmp_path / "out").exists()
