@@ -132,7 +132,21 @@ def check_keep_area(text, desc):
     cfg = read_text(text)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        geo = jc.complete(cfg, "cubic", keep_area=True)
+        try:
+            geo = jc.complete(cfg, "cubic", keep_area=True)
+        except (jc.ConvergenceError, jc.GeometryError) as exc:
+            # The known open classes (issue 11; about 1 % of generated circular-body decks in
+            # tools/survey_decks.py): the fixed-area iteration does not settle where fillet
+            # stations move with the body faster than it shrinks (highly swept roots, stations
+            # that go back in x near an edge, an intersection on a bend of the lofting line),
+            # or the fillet asks more than a body mostly covered by wing roots can give up.
+            # Each must be refused in one line naming the body, the station and (for the
+            # second) what to change; every check below on the runs that complete holds.
+            msg = str(exc)
+            assert "\n" not in msg and msg.startswith("body") and "x = " in msg, msg
+            if isinstance(exc, jc.GeometryError):
+                assert "can give up" in msg and "use a smaller fillet" in msg, msg
+            return
     st_ = geo.stations
     body0, body1 = cfg["body"], geo.configuration["body"]
     a0 = np.pi * body0.radius_at(st_["x"]) ** 2

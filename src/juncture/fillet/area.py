@@ -424,15 +424,23 @@ class BodyReduction:
         linear, shared = self.P @ a, self.P_share @ a
         half = 0.5 * np.pi * r0 ** 2
         cap = np.maximum(shared, half)
-        self._rows = (linear > cap, shared >= half)
-        removed = np.minimum(linear, cap)
+        # Never less than nothing: a fillet only adds area, so the body never grows (a
+        # station whose fillet is blended out to nothing would otherwise give up -1e-8 of
+        # round-off, and the body grow behind it).
+        self._rows = (linear > cap, shared >= half, linear < 0)
+        removed = np.maximum(np.minimum(linear, cap), 0.0)
         # pi d^2 - (2 pi r0 - L) d + A = 0 for the radius reduction d = r0 - r (smaller root).
         disc = b * b - 4 * np.pi * removed
         if np.any(disc < 0) or np.any(r0 ** 2 - removed / np.pi < 0):
             k = int(np.argmax((disc < 0) | (r0 ** 2 - removed / np.pi < 0)))
+            covered = 2 * np.pi * r0[k] - b[k]
+            most = b[k] ** 2 / (4 * np.pi)  # what shrinking can give up with that cover
             raise GeometryError(f"the fillet adds more area ({removed[k]:.4g}) than the body "
-                                f"has at x = {xn[k]:.6g} ({np.pi * r0[k] ** 2:.4g}); use a "
-                                "smaller fillet", body.name, f"x = {xn[k]:.6g}")
+                                f"can give up at x = {xn[k]:.6g} (section {np.pi * r0[k] ** 2:.4g}"
+                                f", wing roots covering {covered:.4g} of its perimeter "
+                                f"{2 * np.pi * r0[k]:.4g}: at most {most:.4g}); use a smaller "
+                                "fillet (theta_u, end value) or compensate='fillet'",
+                                body.name, f"x = {xn[k]:.6g}")
         sqrt_disc = np.sqrt(disc)
         den = b + sqrt_disc
         # The stable form of (b - sqrt(disc)) / (2 pi); nothing to remove where the body is
@@ -453,8 +461,9 @@ class BodyReduction:
         """d(r0 - r)(xq) / d(area_removed) of the last :meth:`body`: (len(xq), stations)."""
         from ..model.body import hermite_pieces
 
-        capped, by_share = self._rows
+        capped, by_share, clipped = self._rows
         used = np.where(capped[:, None], np.where(by_share[:, None], self.P_share, 0.0), self.P)
+        used = np.where(clipped[:, None], 0.0, used)
         dnode = self._dd_da[:, None] * used  # d(d_n) / d(a), sorted station order
         # d(xq) is the Hermite interpolant of the nodal d with slopes grad(d), linear in d:
         # interpolate each column of dnode the same way.
@@ -532,7 +541,7 @@ def _feasible(reduction, t, step, scale=1.0, tries=6):
     return trial
 
 
-def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=60, sides=2, exposure=None,
+def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, exposure=None,
               memory=1, initial=None, compensate: Compensate = "section"):
     """Shrink the body until body area + added area equals the original area (TM-4406).
 

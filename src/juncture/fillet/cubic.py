@@ -346,16 +346,59 @@ def _segment(u, n_sections):
     return np.clip(np.floor(u), 0, n_sections - 2).astype(int)
 
 
+#: Just outboard of a bend of the lofting line, at a distance a past it, the end point lies
+#: at most BEND_MARGIN * a from I (the fillet grows from nothing as I leaves the bend).
+BEND_MARGIN = 4.0
+
+
+def _arc(lines):
+    """(m, n) arc length of each lofting line at its sections, and (m, n - 1) piece lengths."""
+    piece = np.linalg.norm(np.diff(lines, axis=1), axis=2)
+    return np.concatenate([np.zeros((len(lines), 1)), np.cumsum(piece, axis=1)], axis=1), piece
+
+
+def _length_at(arc, piece, u):
+    """Arc length along each line at section coordinate u (m,), clamped to the line."""
+    n = arc.shape[1]
+    u = np.clip(np.nan_to_num(u), 0.0, n - 1.0)
+    j = np.minimum(np.floor(u).astype(int), n - 2)
+    rows = np.arange(len(u))
+    return arc[rows, j] + (u - j) * piece[rows, j]
+
+
+def _u_at(arc, piece, s):
+    """Section coordinate at arc length s (m,) along each line (inverse of _length_at)."""
+    n = arc.shape[1]
+    j = np.clip((arc[:, 1:-1] <= s[:, None]).sum(axis=1), 0, n - 2)
+    rows = np.arange(len(s))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (s - arc[rows, j]) / piece[rows, j]
+    return j + np.clip(np.nan_to_num(t), 0.0, 1.0)
+
+
 def _end_coordinate(wing, inter, end, end_value, k, side, lines):
-    """Section coordinate of E per line (module docstring), and the lines where it is held."""
+    """Section coordinate of E per line (module docstring), and the lines where it is held.
+
+    ``end="dy"`` is a span increment from I, across sections if it reaches past one. E
+    is held where the lofting line first bends outboard of I (sections it runs straight
+    through do not count; the tip at most), so that the wing between I and E is straight
+    and the curve cannot cut a corner of it. Just outboard of a bend, E lies at most
+    ``BEND_MARGIN`` times I's distance from the bend away from I: the fillet shrinks to
+    nothing as I approaches a bend from either side, so it changes continuously when the
+    intersection moves across a section (as it does while the fixed-area iteration shrinks
+    the body).
+    """
     u_i = inter.u
     st = wing.span_stations
+    n = lines.shape[1]
     if end == "section":
         u_e = k + float(end_value)
     elif end == "intersection":
         u_e = u_i + float(end_value) * ((k + 1.0) - u_i)
     elif end == "dy":
-        u_e = u_i + float(end_value) / (st[k + 1] - st[k])
+        span_i = np.interp(np.nan_to_num(u_i), np.arange(n), st)
+        u_e = np.interp(span_i + float(end_value), st, np.arange(n), right=n - 1.0)
+        u_e = np.where(span_i + float(end_value) > st[-1], n - 1.0, u_e)
     else:
         raise GeometryError(f"fillet end must be 'section', 'intersection' or 'dy', found "
                             f"{end!r}", wing.name)
@@ -367,18 +410,24 @@ def _end_coordinate(wing, inter, end, end_value, k, side, lines):
                             f"{u_e[j]:.4g}) is not outboard of the intersection (u = "
                             f"{u_i[j]:.4g}) on its lofting line; choose a larger end value or "
                             "end='dy'", wing.name, j + 1)
-    # Hold E where the lofting line bends first outboard of I (sections it runs straight
-    # through do not count; the tip at most): the wing between I and E is then straight,
-    # and a curve through I, P2 and E cannot cut a corner of it.
     d = np.diff(lines, axis=1)
     d = d / np.linalg.norm(d, axis=2)[..., None]
-    kink = np.ones(lines.shape[:2], bool)
+    kink = np.zeros(lines.shape[:2], bool)
     kink[:, 1:-1] = 1.0 - (d[:, :-1] * d[:, 1:]).sum(-1) > 1e-12
-    sections = np.arange(lines.shape[1])
-    u_max = np.where(kink & (sections[None, :] >= k[:, None] + 1), sections[None, :],
-                     lines.shape[1] - 1).min(axis=1).astype(float)
-    held = found & (u_e > u_max)
-    return np.where(held, u_max, u_e), held
+    sections = np.arange(n)
+    u_next = np.where((kink | (sections == n - 1)) & (sections[None, :] >= k[:, None] + 1),
+                      sections[None, :], n - 1).min(axis=1).astype(float)
+    u_prev = np.where(kink & (sections[None, :] <= np.floor(np.nan_to_num(u_i))[:, None]),
+                      sections[None, :], -1).max(axis=1).astype(float)
+    arc, piece = _arc(lines)
+    s_i = _length_at(arc, piece, u_i)
+    want = _length_at(arc, piece, np.minimum(u_e, n - 1.0)) - s_i
+    allowed = _length_at(arc, piece, u_next) - s_i
+    past = s_i - _length_at(arc, piece, u_prev)
+    allowed = np.where(u_prev >= 0, np.minimum(allowed, BEND_MARGIN * past), allowed)
+    held = found & (allowed < want)
+    u_held = _u_at(arc, piece, s_i + np.maximum(allowed, 0.0))
+    return np.where(held, u_held, np.minimum(u_e, n - 1.0)), held
 
 
 def blend_over(x_i, blend_length=None, blend_range=None):
