@@ -18,7 +18,7 @@ def run_json(capsys, *args):
 
 
 def test_json_has_the_documented_keys(capsys):
-    doc = run_json(capsys, PDAS_DECK)
+    doc = run_json(capsys, PDAS_DECK, "--slender-body")
     assert set(doc) >= {"mach", "D_over_q", "CD", "method"}
     assert doc["mach"] is None and doc["method"].startswith("slender-body")
     np.testing.assert_allclose(doc["CD"], doc["D_over_q"] / 16.0)  # REFA of the deck
@@ -26,9 +26,41 @@ def test_json_has_the_documented_keys(capsys):
     assert doc["mach"] == 1.5 and "far-field" in doc["method"]
 
 
+def test_the_decks_case_cards_run_by_default_and_mach_overrides_them(capsys, tmp_path):
+    """The PDAS sample's card M1.2 (NX 50, NTHETA 16): the default run is that far-field
+    case at 51 stations, equal to the library call with those settings; two cards give a
+    table of both; --mach and --n-x override."""
+    from juncture.analysis import wavedrag
+    from juncture.io._deck import DeckCase
+
+    cfg = jc.read(PDAS_DECK)
+    doc = run_json(capsys, PDAS_DECK)
+    ref = wavedrag(cfg, 1.2, n_x=51, n_theta=16)
+    assert doc["mach"] == 1.2 and doc["D_over_q"] == ref["D_over_q"]
+    assert run_json(capsys, PDAS_DECK, "--mach", "1.5")["mach"] == 1.5
+    # A second card: a table of both (JSON: a list), each with its own NX and NTHETA.
+    src = PDAS_DECK.read_text().splitlines()
+    i = next(k for k, ln in enumerate(src) if ln.startswith("M1.2"))
+    two = tmp_path / "two.inp"
+    two.write_text("\n".join(src[:i + 2] + ["M2.0" + "2000  30   8   0   0"] + src[i + 2:])
+                   + "\n")
+    cards = [c for c in jc.read(two).source.cases if c.mach > 0]
+    assert [(c.mach, c.nx, c.ntheta) for c in cards] == [(1200, 50, 16), (2000, 30, 8)]
+    runs = run_json(capsys, two)
+    assert [(r["mach"], r["n_x"], r["n_theta"]) for r in runs] == [(1.2, 51, 16), (2.0, 31, 8)]
+    assert runs[1]["results"]["original"]["D_over_q"] == \
+        wavedrag(cfg, 2.0, n_x=31, n_theta=8)["D_over_q"]
+    runs = run_json(capsys, two, "--n-x", "41")
+    assert [r["n_x"] for r in runs] == [41, 41]
+    assert main(["wavedrag", str(two)]) == 0
+    table = capsys.readouterr().out
+    assert "M1.2" in table and "M2.0" in table
+    assert DeckCase  # the card type the deck reader gives
+
+
 @pytest.mark.parametrize("fillet", ["cubic", "circular"])
 def test_fillet_raises_drag_and_fixed_area_restores_it(capsys, fillet):
-    doc = run_json(capsys, EXAMPLE_DECK, "--fillet", fillet, "--keep-area")
+    doc = run_json(capsys, EXAMPLE_DECK, "--fillet", fillet, "--keep-area", "--slender-body")
     cases = doc["cases"]
     base = cases["original"]["D_over_q"]
     assert cases[f"{fillet} fillet"]["D_over_q"] > base

@@ -240,18 +240,79 @@ def wavedrag(args, progress):
     if args.keep_area and fillet is None:
         fail("argument --keep-area: needs --fillet cubic or circular (without "
              "a fillet there is no added area to compensate)")
+    if args.slender_body and args.mach is not None:
+        fail("argument --slender-body: not with --mach (one or the other)")
     cfg = read_configuration(args.deck, "wavedrag")
     out = None if args.output is None else output_dir(args.output)
-    results = {}
+    runs = mach_runs(cfg, args.mach, args.n_x, args.n_theta, args.slender_body)
     cases = _wavedrag_cases(cfg, fillet, args.keep_area)
-    with progress(len(cases), "wave drag") as bar:
-        for label, geometry in cases.items():
-            bar.step(label)
-            results[label] = wave_drag(cfg, args.mach, n_x=args.n_x, n_theta=args.n_theta,
-                                       geometry=geometry())
+    geometries = {}
+    per_run = []
+    with progress(len(cases) * len(runs), "wave drag") as bar:
+        for run in runs:
+            results = {}
+            for label, geometry in cases.items():
+                bar.step(f"{run['case']} {label}".strip())
+                if label not in geometries:
+                    geometries[label] = geometry()
+                results[label] = wave_drag(cfg, run["mach"], n_x=run["n_x"],
+                                           n_theta=run["n_theta"], geometry=geometries[label])
+            per_run.append((run, results))
     if not args.json:
         _say(args, cfg.title)
-    return _print_wavedrag(args, results, out, cfg.title)
+        if runs[0]["case"]:
+            _say(args, *(f"case card {r['case']}: Mach {r['mach']:g}, {r['n_x']} stations, "
+                         f"NTHETA {r['n_theta']}" for r in runs))
+    if len(per_run) == 1:
+        return _print_wavedrag(args, per_run[0][1], out, cfg.title)
+    return _print_mach_cases(args, per_run, out, cfg.title)
+
+
+def mach_runs(cfg, mach=None, n_x=None, n_theta=None, slender=False):
+    """The wave-drag runs a command asks for: ``--mach`` (or ``--slender-body``) alone, else
+    one per case card of the deck with a Mach number (Mach = MACH / 1000, NX + 1 stations,
+    NTHETA; ``n_x`` and ``n_theta`` given override the cards'), else slender body.
+
+    Returns a list of dicts ``case`` (NCASE), ``mach`` (None: slender body), ``n_x``,
+    ``n_theta``.
+    """
+    cards = [] if (mach is not None or slender) else [
+        c for c in (getattr(cfg.source, "cases", None) or ()) if c.mach > 0]
+    if not cards:
+        return [{"case": "", "mach": mach, "n_x": n_x or 101, "n_theta": n_theta or 16}]
+    return [{"case": c.ncase.strip() or f"case {i + 1}", "mach": c.mach / 1000.0,
+             "n_x": n_x or (c.nx + 1 if c.nx > 0 else 101),
+             "n_theta": n_theta or (c.ntheta if c.ntheta > 0 else 16)}
+            for i, c in enumerate(cards)]
+
+
+def _print_mach_cases(args, per_run, out, title):
+    """One table per case card (several Mach numbers); JSON: a list of the cases."""
+    from ..io import atomic_output
+
+    keys = ("mach", "D_over_q", "CD", "method")
+    if out is not None:
+        from ..plots import plot_area_distribution
+
+        for k, (run, results) in enumerate(per_run, 1):
+            plot_area_distribution(results, out / f"areas_{k}.png",
+                                   title=f"{title} ({run['case']})", units=args.units)
+        with atomic_output(out / "wavedrag.json") as fh:
+            json.dump([{**run, "results": results} for run, results in per_run], fh, indent=1)
+    if args.json:
+        print(json.dumps([{**run, "results": {label: {k: r[k] for k in keys}
+                                              for label, r in results.items()}}
+                          for run, results in per_run], indent=1))
+        return 0
+    print(f"{'card':<8}{'Mach':>6}{'n_x':>6}{'NTHETA':>8}  {'case':<30}{'D/q':>14}{'CD':>12}")
+    for run, results in per_run:
+        for label, r in results.items():
+            cd = "" if r["CD"] is None else f"{r['CD']:.6f}"
+            print(f"{run['case']:<8}{run['mach']:>6g}{run['n_x']:>6}{run['n_theta']:>8}  "
+                  f"{label:<30}{r['D_over_q']:>14.6g}{cd:>12}")
+    if out is not None:
+        _say(args, f"wrote {len(per_run)} area figures and {out / 'wavedrag.json'}")
+    return 0
 
 
 def _print_wavedrag(args, results, out, title):

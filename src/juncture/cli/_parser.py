@@ -187,7 +187,10 @@ def build_parser(version):
                        help="area distributions and supersonic wave drag")
     s.add_argument("deck")
     s.add_argument("--mach", type=_mach,
-                   help="far-field wave drag at this Mach number, 1-10 (default: slender body)")
+                   help="far-field wave drag at this Mach number, 1-10 (default: each case "
+                   "card of the deck, with its NX and NTHETA; slender body without cards)")
+    s.add_argument("--slender-body", action="store_true",
+                   help="slender-body wave drag of the normal areas, whatever the case cards")
     s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
                    help="also analyse the configuration with this wing-body fillet")
     s.add_argument("--keep-area", action="store_true",
@@ -195,11 +198,11 @@ def build_parser(version):
     s.add_argument("--json", action="store_true",
                    help='print {"mach", "D_over_q", "CD", "method"} (of the last case)')
     s.add_argument("-o", "--output", help="directory for areas.png and wavedrag.json")
-    s.add_argument("--n-x", type=_count(11, 100_000, "a number of stations"), default=101,
-                   help="stations / cuts per angle (default 101)")
-    s.add_argument("--n-theta", type=_count(1, 3600, "a number of roll angles"), default=16,
+    s.add_argument("--n-x", type=_count(11, 100_000, "a number of stations"),
+                   help="stations / cuts per angle (default: a case card's NX + 1, else 101)")
+    s.add_argument("--n-theta", type=_count(1, 3600, "a number of roll angles"),
                    help="Harris NTHETA: roll-angle intervals per half turn of a symmetric "
-                   "airplane, full turn otherwise (default 16)")
+                   "airplane, full turn otherwise (default: the case card's, else 16)")
     _units(s)
 
     s = sub.add_parser("blend", parents=[common],
