@@ -127,3 +127,31 @@ def test_output_directory_gets_the_plot_and_numbers(tmp_path, capsys):
 def test_keep_area_without_fillet_is_a_usage_error(capsys):
     assert main(["wavedrag", str(PDAS_DECK), "--keep-area"]) == 2
     assert "argument --keep-area: needs --fillet cubic or circular" in capsys.readouterr().err
+
+
+def test_converge_refines_until_it_settles_and_says_how_far_the_start_was(capsys):
+    """A Sears-Haack body (slender body): refinement stops by the tolerance near the exact
+    128 V^2 / (pi l^4); the PDAS wing-body at a coarse start is reported off, with a
+    warning, and the refined value is the library's at the final resolution."""
+    from juncture.analysis import converged_wavedrag, wavedrag
+
+    length, rmax = 100.0, 5.0
+    x = length * (1 - np.cos(np.linspace(0, np.pi, 121))) / 2
+    r = rmax * (4 * (x / length) * (1 - x / length)) ** 0.75
+    cfg = Configuration({"body": CircularBody("body", x, r)}, reference_area=1.0)
+    exact = 128 * (3 * np.pi ** 2 * rmax ** 2 * length / 16) ** 2 / (np.pi * length ** 4)
+    c = converged_wavedrag(cfg, None, n_x=21, tolerance=1e-3)
+    assert c["converged"] and c["error"] <= 1e-3 * c["D_over_q"]
+    assert c["D_over_q"] == pytest.approx(exact, rel=5e-3)
+    assert [h[0] for h in c["history"]] == [21 * 2 ** k - (2 ** k - 1)
+                                           for k in range(len(c["history"]))]
+    assert main(["wavedrag", str(PDAS_DECK), "--n-x", "21", "--n-theta", "4",
+                 "--converge", "0.02"]) == 0
+    out, err = capsys.readouterr()
+    line = next(ln for ln in out.splitlines() if "converged: D/q" in ln)
+    assert line.startswith("M1.2: ")
+    assert "juncture: warning: M1.2: the wave drag at n_x 21, NTHETA 4 is" in err
+    final = [int(v) for v in line.split(" at n_x ")[1].split(" (")[0].split(", NTHETA ")]
+    value = float(line.split("D/q ")[1].split(" +-")[0])
+    ref = wavedrag(jc.read(PDAS_DECK), 1.2, n_x=final[0], n_theta=final[1])["D_over_q"]
+    assert value == pytest.approx(ref, rel=1e-5)

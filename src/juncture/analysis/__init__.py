@@ -2,7 +2,7 @@
 
 from .areas import normal_area_distribution
 from .closed import closed_networks
-from .command import wavedrag
+from .command import converged_wavedrag, wavedrag
 from .cuts import mach_plane_areas, mach_plane_extents, normal_areas, plane_cut_areas
 from .machplanes import mach_plane_area_distribution
 from .wavedrag import (
@@ -22,6 +22,7 @@ __all__ = [
     "mach_plane_area_distribution",
     "closed_networks",
     "wavedrag",
+    "converged_wavedrag",
     "plane_cut_areas",
     "normal_areas",
     "mach_plane_areas",

@@ -14,7 +14,7 @@ from .areas import default_stations, normal_area_distribution
 from .machplanes import _mach_plane_cuts
 from .wavedrag import _rule_name, eminton_lord, far_field_drag, roll_angles
 
-__all__ = ["wavedrag", "fillet_areas"]
+__all__ = ["wavedrag", "fillet_areas", "converged_wavedrag"]
 
 
 def _floats(a):
@@ -227,3 +227,42 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None)
                    x_cuts=np.asarray(x_cuts).tolist(), cut_areas=np.asarray(cut_areas).tolist())
     out["CD"] = None if ref is None else out["D_over_q"] / ref
     return out
+
+
+def converged_wavedrag(cfg, mach=None, n_x=101, n_theta=16, tolerance=5e-3, max_doublings=4,
+                       geometry=None):
+    """Wave drag refined until it settles: n_x doubled (its intervals) until D/q changes by
+    less than ``tolerance`` (relative), then, for a far-field run, n_theta the same way.
+
+    Returns a dict: ``D_over_q`` (the finest value), ``error`` (the last change, an estimate
+    of the remaining error), ``n_x``, ``n_theta`` (the finest), ``converged`` (both stopped
+    by the tolerance, not by ``max_doublings``), ``start`` (D/q at the given resolution),
+    ``start_error`` (its relative distance from the finest value) and ``history``
+    (``[n_x, n_theta, D/q]`` of every run).
+    """
+    history = []
+
+    def run(nx, nt):
+        value = wavedrag(cfg, mach, n_x=nx, n_theta=nt, geometry=geometry)["D_over_q"]
+        history.append([nx, nt, value])
+        return value
+
+    def refine(value, nx, nt, which):
+        for _ in range(max_doublings):
+            nx2, nt2 = (2 * nx - 1, nt) if which == "x" else (nx, 2 * nt)
+            new = run(nx2, nt2)
+            change = abs(new - value)
+            nx, nt, value = nx2, nt2, new
+            if change <= tolerance * abs(new):
+                return value, nx, nt, change, True
+        return value, nx, nt, change, False
+
+    start = run(int(n_x), int(n_theta))
+    value, nx, nt, err_x, ok_x = refine(start, int(n_x), int(n_theta), "x")
+    err_t, ok_t = 0.0, True
+    if mach is not None:
+        value, nx, nt, err_t, ok_t = refine(value, nx, nt, "theta")
+    return {"D_over_q": float(value), "error": float(max(err_x, err_t)), "n_x": nx,
+            "n_theta": nt, "converged": bool(ok_x and ok_t), "start": float(start),
+            "start_error": float(abs(start - value) / abs(value)) if value else 0.0,
+            "history": history}

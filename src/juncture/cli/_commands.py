@@ -263,9 +263,37 @@ def wavedrag(args, progress):
         if runs[0]["case"]:
             _say(args, *(f"case card {r['case']}: Mach {r['mach']:g}, {r['n_x']} stations, "
                          f"NTHETA {r['n_theta']}" for r in runs))
-    if len(per_run) == 1:
-        return _print_wavedrag(args, per_run[0][1], out, cfg.title)
-    return _print_mach_cases(args, per_run, out, cfg.title)
+    status = _print_wavedrag(args, per_run[0][1], out, cfg.title) if len(per_run) == 1 \
+        else _print_mach_cases(args, per_run, out, cfg.title)
+    if args.converge is not None:
+        _converge(args, cfg, runs, geometries.get("original"), progress)
+    return status
+
+
+def _converge(args, cfg, runs, geometry, progress):
+    """--converge: each run refined (analysis.converged_wavedrag), one line each, and a
+    warning where the chosen resolution is off by more than 1 %."""
+    import warnings
+
+    from ..analysis import converged_wavedrag
+    from ..errors import JunctureWarning
+
+    with progress(len(runs), "convergence") as bar:
+        for run in runs:
+            bar.step(run["case"] or "convergence")
+            c = converged_wavedrag(cfg, run["mach"], run["n_x"], run["n_theta"],
+                                   tolerance=args.converge, geometry=geometry)
+            label = (run["case"] + ": ") if run["case"] else ""
+            state = "converged" if c["converged"] else "NOT converged"
+            print(f"{label}{state}: D/q {c['D_over_q']:.6g} +- {c['error']:.3g} at n_x "
+                  f"{c['n_x']}, NTHETA {c['n_theta']} (start {c['start']:.6g} at n_x "
+                  f"{run['n_x']}, NTHETA {run['n_theta']}: off by "
+                  f"{100 * c['start_error']:.2f} %)")
+            if c["start_error"] > 0.01:
+                warnings.warn(f"{label}the wave drag at n_x {run['n_x']}, NTHETA "
+                              f"{run['n_theta']} is {100 * c['start_error']:.1f} % from the "
+                              f"refined value (n_x {c['n_x']}, NTHETA {c['n_theta']})",
+                              JunctureWarning, stacklevel=2)
 
 
 def mach_runs(cfg, mach=None, n_x=None, n_theta=None, slender=False):

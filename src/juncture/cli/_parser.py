@@ -189,6 +189,11 @@ def build_parser(version):
     s.add_argument("--mach", type=_mach,
                    help="far-field wave drag at this Mach number, 1-10 (default: each case "
                    "card of the deck, with its NX and NTHETA; slender body without cards)")
+    s.add_argument("--converge", nargs="?", const=5e-3, default=None, metavar="TOL",
+                   type=_positive("a relative tolerance"),
+                   help="refine n_x, then NTHETA, by doubling until D/q changes by less than "
+                   "TOL (default 0.005); report the estimate, its error and how far the "
+                   "chosen resolution was off")
     s.add_argument("--slender-body", action="store_true",
                    help="slender-body wave drag of the normal areas, whatever the case cards")
     s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
