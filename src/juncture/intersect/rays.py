@@ -136,7 +136,9 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
         exact = act & (fc == 0.0)
         a = np.where(exact, c, a)
         b = np.where(exact, c, b)
-        act = act & (np.abs(b - a) > rtol * np.maximum(1.0, np.abs(c)))
+        width = np.maximum(rtol * np.maximum(1.0, np.abs(c)), 4 * np.spacing(np.maximum(1.0,
+                                                                                  np.abs(c))))
+        act = act & (np.abs(b - a) > width)
     return a, b, fa, fb, it
 
 
@@ -191,7 +193,10 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
         # Once the correction is below 1e-9 the Newton iterate is exact to ~1e-18 (quadratic
         # convergence): take it without another evaluation (the caller measures the final
         # residual anyway).
-        done = (np.abs(step) <= tol * scale) | (e == 0) | (np.abs(br - ar) <= rtol * scale)
+        # ... or the bracket is down to a few floats (a jump of the error there: the root is
+        # located as well as u can be; the caller tells a jump from a root).
+        done = (np.abs(step) <= tol * scale) | (e == 0) | (np.abs(br - ar) <= rtol * scale) | \
+            (np.abs(br - ar) <= 4 * np.spacing(scale))
         need = ~inside & ~done
         use_rf = np.zeros(rows.size, bool)
         if need.any():  # Newton left the bracket: regula falsi there, or bisection
@@ -202,6 +207,11 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
             nxt[need] = np.where(ok_rf, rf, 0.5 * (ar[need] + br[need]))
             use_rf[need] = ok_rf
         fell[rows] = use_rf
+        if it > 30 and it % 2 == 0:
+            # Still open after 30 steps: Newton creeps (an error flat near zero over the
+            # bracket, a line grazing the body). Every other step bisects, so the bracket
+            # halves at least every two evaluations.
+            nxt = np.where(done, nxt, 0.5 * (ar + br))
         u[rows] = np.where(done & ~inside, ur, nxt)
         rows = rows[~done]
     return u, fu, it
