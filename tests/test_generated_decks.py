@@ -105,6 +105,12 @@ def assert_round_trip(text):
     assert components_differ(cfg, again) == ""
 
 
+def own_offset(row):
+    """``b_own`` of a row, 0 for a line whose points were all not found (NaN: nothing to
+    measure; the NaN count is checked where misses are the subject)."""
+    return 0.0 if row["b_own"] is None and row["nan"] == row["points"] else row["b_own"]
+
+
 def check_kinds(desc, b):
     kind = desc["components"][b]["kind"]
     return "wing-like" if kind in ("wing", "canard", "tail", "fin") else kind
@@ -173,7 +179,7 @@ def test_intersection_points_lie_on_circular_fuselages_and_pods(example):
     for row in offsets(text, desc) or ():
         if check_kinds(desc, row["b"]) in ("circular", "pod"):
             assert row["b_deck"] <= TOL, row
-            assert row["b_own"] <= TOL, row
+            assert own_offset(row) <= TOL, row
 
 
 @settings(max_examples=25, **FAST)
@@ -184,7 +190,7 @@ def test_intersection_points_lie_on_arbitrary_fuselages_as_juncture_models_them(
     text, desc = example
     for row in offsets(text, desc) or ():
         if row["b"] == "body":
-            assert row["b_own"] <= TOL, row
+            assert own_offset(row) <= TOL, row
 
 
 @settings(max_examples=30, **FAST)
@@ -272,7 +278,7 @@ def test_slow_intersection_points_lie_on_fuselages_and_pods_off_gaps_steps_and_e
         if kind in ("circular", "pod"):
             assert row["b_deck"] <= TOL, row
         if kind != "wing-like":
-            assert row["b_own"] <= TOL, row
+            assert own_offset(row) <= TOL, row
 
 
 @pytest.mark.slow
