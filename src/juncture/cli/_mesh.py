@@ -9,15 +9,11 @@ _FORMATS = ("stl", "msh", "vtu")
 
 def add_parser(sub, common):
     """The ``mesh`` sub-command's parser."""
+    from ._parser import completion_arguments
+
     s = sub.add_parser("mesh", parents=[common],
                        help="one closed, oriented triangulated surface of the completed airplane")
-    s.add_argument("deck", help="wave-drag deck or juncture JSON/TOML model")
-    s.add_argument("-o", "--output", default="juncture-mesh",
-                   help="output directory (default: juncture-mesh)")
-    s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
-                   help="wing-body fillet (default: none)")
-    s.add_argument("--keep-area", action="store_true",
-                   help="re-design the fuselage at fixed area (needs --fillet)")
+    completion_arguments(s, "juncture-mesh")
     s.add_argument("--format", nargs="+", default=["stl"], choices=_FORMATS, metavar="EXT",
                    help=f"mesh formats (default: stl); one or more of {', '.join(_FORMATS)}")
     s.add_argument("--ascii", action="store_true",

@@ -111,17 +111,23 @@ def _units(p):
                    "coordinates are never converted")
 
 
-def _complete_parser(sub, common, extensions):
-    s = sub.add_parser("complete", parents=[common],
-                       help="intersect, fillet and re-design the wing-body juncture")
+def completion_arguments(s, output):
+    """The arguments every command that completes a deck takes: the deck, -o (default
+    ``output``), --fillet and --keep-area."""
     s.add_argument("deck", help="wave-drag deck or juncture JSON/TOML model")
-    s.add_argument("-o", "--output", default="juncture-output",
-                   help="output directory (default: juncture-output)")
+    s.add_argument("-o", "--output", default=output,
+                   help=f"output directory (default: {output})")
     s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
                    help="wing-body fillet (default: none)")
     s.add_argument("--keep-area", action="store_true",
                    help="shrink the fuselage so body + fillet keeps the original area "
                    "(needs --fillet)")
+
+
+def _complete_parser(sub, common, extensions):
+    s = sub.add_parser("complete", parents=[common],
+                       help="intersect, fillet and re-design the wing-body juncture")
+    completion_arguments(s, "juncture-output")
     s.add_argument("--compensate", choices=("section", "fillet"),
                    help="with --keep-area: keep the whole section's area (default: fillets "
                    "and the wing root the shrinking uncovers) or, as TM-4406 eqs 11-14, only "
