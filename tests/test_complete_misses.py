@@ -256,8 +256,7 @@ def test_single_network_cubic_lower_lines_are_re_interpolated_whole(kw):
 def test_every_option_set_on_a_generated_high_wing_deck():
     """A generated high-wing deck (tests.deckgen, fixed seed) whose upper lines miss the
     fuselage: all fifteen option sets of the survey complete with finite networks."""
-    from tests.deckgen import deck_from_seed
-    from tests.test_generated_decks import read_text
+    from tests.deckgen import deck_from_seed, read_text
 
     for seed in range(40):
         text, desc = deck_from_seed(seed, (), wing_height="high", section="circular")

@@ -29,6 +29,7 @@ from tests.deckgen import (
     components_differ,
     decks,
     intersection_offsets,
+    read_text,
     references,
     wing_body_decks,
 )
@@ -38,16 +39,6 @@ FAST = dict(deadline=None, derandomize=True, suppress_health_check=[HealthCheck.
             phases=(Phase.explicit, Phase.generate))
 SLOW = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow],
             phases=(Phase.explicit, Phase.reuse, Phase.generate))
-
-
-def read_text(text, name="deck.inp"):
-    """``jc.read`` of deck text, through a temporary file; warnings are not errors here."""
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / name
-        path.write_text(text)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            return jc.read(path)
 
 
 def complete_or_refuse(cfg, **kwargs):

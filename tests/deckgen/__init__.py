@@ -43,6 +43,7 @@ gives, matched between stations by normalised arc length and blended linearly in
 lies from both surfaces it is meant to be on.
 """
 
+from ._read import read_text
 from .draw import (
     FAMILIES,
     deck_from_seed,
@@ -64,6 +65,7 @@ from .references import (
 )
 
 __all__ = [
+    "read_text",
     "components_differ",
     "FAMILIES",
     "decks",

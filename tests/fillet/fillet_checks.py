@@ -9,23 +9,7 @@ thousands of points; crossings from an exact orientation predicate.
 
 from __future__ import annotations
 
-import tempfile
-import warnings
-from pathlib import Path
-
 import numpy as np
-
-import juncture as jc
-
-
-def read_text(text):
-    """``jc.read`` of deck text through a temporary file (warnings silenced)."""
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "deck.inp"
-        path.write_text(text)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            return jc.read(path)
 
 
 def cubic_of(points):

@@ -29,12 +29,11 @@ from hypothesis import strategies as st
 import juncture as jc
 from juncture.fillet import cubic_fillet, wedge_area
 from juncture.intersect import intersect_body_both
-from tests.deckgen import references, wing_body_decks
+from tests.deckgen import read_text, references, wing_body_decks
 from tests.fillet.fillet_checks import (
     angle,
     crossing_pairs,
     end_tangents,
-    read_text,
     wedge_reference,
 )
 

@@ -14,27 +14,14 @@ circular fuselages and pods against the deck off gaps between segments, and at t
 stations (where an open end has no surface).
 """
 
-import tempfile
-import warnings
-from pathlib import Path
 from types import SimpleNamespace
 
 from hypothesis import HealthCheck, Phase, given, settings
 
-import juncture as jc
 from juncture.intersect import find_intersections
-from tests.deckgen import decks, intersection_offsets
+from tests.deckgen import decks, intersection_offsets, read_text
 
 TOL = 1e-9  # relative to the fuselage length
-
-
-def read_text(text):
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "deck.inp"
-        path.write_text(text)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            return jc.read(path)
 
 
 def kept_points(cfg):
