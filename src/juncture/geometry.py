@@ -126,6 +126,16 @@ class Geometry:
             out[f"{name} image"] = mirror_points(self.networks[name], plane)[::-1]
         return out
 
+    def component_of(self, name):
+        """The component a network (or its ``" image"``) belongs to: the longest component
+        name of ``configuration`` that the network's name is or starts with (``"pod 1"`` for
+        ``"pod 1"``, ``"fin 3"`` for ``"fin 3 outboard image"``), else the network's own
+        name without ``" image"``."""
+        base = name[:-len(" image")] if name.endswith(" image") else name
+        names = sorted(getattr(self.configuration, "components", None) or (), key=len,
+                       reverse=True)
+        return next((c for c in names if base == c or base.startswith(c + " ")), base)
+
     def extents(self):
         """(2, 3) array: minimum and maximum x, y, z over all networks (images excluded)."""
         if not self.networks:

@@ -83,13 +83,9 @@ def bilinear_face(api, net, size):
 def products(geometry, mirror=True):
     """{product name: [(network name, points)]} in the networks' order."""
     nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
-    cfg = geometry.configuration
-    names = sorted(getattr(cfg, "components", None) or (), key=len, reverse=True)
     out = {}
     for name, pts in nets.items():
-        base = name[:-len(" image")] if name.endswith(" image") else name
-        owner = next((c for c in names if base == c or base.startswith(c + " ")), base)
-        out.setdefault(owner, []).append((name, pts))
+        out.setdefault(geometry.component_of(name), []).append((name, pts))
     return out
 
 

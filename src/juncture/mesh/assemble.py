@@ -72,11 +72,6 @@ class SurfaceMesh:
         return out
 
 
-def _owner(name, components):
-    base = name[:-len(" image")] if name.endswith(" image") else name
-    return next((c for c in components if base == c or base.startswith(c + " ")), base)
-
-
 def _quad_triangles(n, m, pts):
     """(2 (n-1)(m-1), 3) local ids: each quad split along its shorter diagonal, oriented as
     the networks are (``cross(d/d point, d/d line)`` outward: (i, j) -> (i, j+1) ->
@@ -306,9 +301,7 @@ def assemble(geometry, mirror=True, cap=True):
         Cap planar boundary loops (tips, blunt bases, open nacelle ends).
     """
     nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
-    cfg = geometry.configuration
-    comps = sorted(getattr(cfg, "components", None) or (), key=len, reverse=True)
-    owners = [_owner(name, comps) for name in nets]
+    owners = [geometry.component_of(name) for name in nets]
     components = tuple(dict.fromkeys(owners))
     pts, tris, comp_id, surf_id, offset = [], [], [], [], 0
     for k, net in enumerate(nets.values()):
