@@ -6,6 +6,7 @@ Public API::
     cfg = jc.read("deck.inp")        # wave-drag deck, LaWGS or juncture JSON, by content
     geo = jc.complete(cfg, fillet="cubic", keep_area=True)
     jc.write(geo, "out.wgs")         # by extension: .wgs .p3d .hess .stl .vtu .vtk .inp ...
+    df = jc.sweep("study.toml")      # a design study: one row per case (pandas DataFrame)
 
 Axes as in the wave-drag deck: x aft, y to starboard, z up; only the y >= 0 half is described.
 
@@ -29,7 +30,7 @@ __version__ = "0.1.0"
 
 # name -> module that defines it, imported on first access
 _LAZY = {"read": ".io", "write": ".io", "complete": ".completion",
-         "CompleteOptions": ".options", "Geometry": ".geometry"}
+         "CompleteOptions": ".options", "Geometry": ".geometry", "sweep": ".study"}
 
 __all__ = [
     "read",
@@ -37,6 +38,7 @@ __all__ = [
     "complete",
     "CompleteOptions",
     "Geometry",
+    "sweep",
     "JunctureError",
     "DeckError",
     "GeometryError",

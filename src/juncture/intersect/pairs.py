@@ -133,10 +133,31 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
                 except GeometryError:
                     continue
                 if any(r.found.any() for r in res):
+                    if role == "body":
+                        _refuse_passing_through(a, b, box(b))
                     auto[pair] = res
                     break
     out.update(_first_reached(auto))
     return out
+
+
+def _refuse_passing_through(wing, body, body_box):
+    """A GeometryError if ``wing`` runs through ``body`` and out on its far side.
+
+    A wing, canard or tail whose root lies inboard of a body it touches and whose tip lies
+    outboard of it (a wing cutting through a nacelle) meets it along a closed curve, with the
+    body standing on neither end of the wing: juncture trims a wing where it *ends* at a body
+    (TM-4406, TM-4607), so such a pair is refused rather than completed with a hole.
+    """
+    if wing.span_axis != 1:
+        return
+    (lo, hi), y = body_box, wing.le[:, 1]
+    if y[0] < lo[1] and y[-1] > hi[1]:
+        raise GeometryError(f"passes through {body.name} (its span runs from y = {y[0]:g} to "
+                            f"{y[-1]:g}, across {body.name} at y = {lo[1]:g} to {hi[1]:g}); "
+                            "juncture completes a wing where it ends at a body: move "
+                            f"{body.name} or {wing.name} so that they do not touch",
+                            wing.name)
 
 
 def _first_reached(found):
