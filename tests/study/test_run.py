@@ -175,3 +175,10 @@ def test_killed_sweep_resumes_without_redoing_finished_cases(tmp_path, monkeypat
         if row["key"] in first:
             assert row["D_over_q_M1.6"] == first[row["key"]]["D_over_q_M1.6"]
     assert json.loads(journal.read_text().splitlines()[0])["key"] in set(frame["key"])
+
+
+def test_public_name_and_progress_bar(tmp_path, capsys):
+    assert jc.sweep is sweep
+    sweep(write_spec(tmp_path, z="[0.0]"), progress=True)
+    err = capsys.readouterr().err
+    assert "sweep" in err and "2/2" in err and "case" in err

@@ -10,6 +10,7 @@ Modules, one job each:
 ``figures``         :func:`write_figures`: every figure of a run that applies, in one call
 ``report``          the self-contained HTML report (``report_css``, ``report_js`` inline)
 ``blend``           figures of the long-strake blend (Song, Ma & Wang)
+``sweep``           figures and the one-page report of a design study (``juncture sweep``)
 ==================  ==========================================================================
 
 Every figure function takes ``units`` (default ``"ft"``), the length unit written on its
@@ -35,6 +36,9 @@ _LAZY = {
     "write_figures": ".figures", "run_figures": ".figures",
     "write_report": ".report", "render_report": ".report", "wireframe_data": ".report",
     "save": "._backend",
+    "plot_against_parameters": ".sweep", "plot_scatter_matrix": ".sweep",
+    "write_sweep_figures": ".sweep", "write_sweep_report": ".sweep",
+    "render_sweep_report": ".sweep",
 }
 
 __all__ = list(_LAZY)
