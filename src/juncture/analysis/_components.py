@@ -76,7 +76,10 @@ def held_bases(cfg):
         if is_flow_through(body):
             continue
         x_end = _end(body)
-        area = float(np.asarray(body.area_at(np.array([x_end])))[0])
+        if isinstance(body, CircularBody):  # the deck's last radius: the interpolant at
+            area = float(np.pi * body.radius[-1] ** 2)  # origin + x[-1] may be a hair off
+        else:
+            area = float(np.asarray(body.area_at(np.array([x_end])))[0])
         if area > 0.0:
             out.append((body, x_end, area))
     return out

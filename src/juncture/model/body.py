@@ -256,11 +256,22 @@ class CircularBody:
         """Body length from first to last station [deck length]."""
         return float(self.x[-1] - self.x[0])
 
+    def _on_body(self, xq):
+        """Whether local stations xq lie on the body, up to the rounding of origin + x.
+
+        A global station ``origin[0] + x[k]`` taken back to local may land an ulp or two
+        beyond ``x[k]``; at the end stations that would read as off the body (radius 0) and
+        close an open base or nose in every output.
+        """
+        tol = 4.0 * np.finfo(float).eps * (abs(float(self.origin[0]))
+                                           + max(abs(float(self.x[0])), abs(float(self.x[-1]))))
+        return (xq >= self.x[0] - tol) & (xq <= self.x[-1] + tol)
+
     def radius_at(self, x, derivative=0):
         """Radius r(x) (or its x-derivative) at global stations; 0 outside the body."""
         xq = np.asarray(x, float) - self.origin[0]
         val = self._interp(xq, derivative)[..., 0]
-        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        inside = self._on_body(xq)
         return np.where(inside, np.maximum(val, 0.0) if derivative == 0 else val, 0.0)
 
     def center_at(self, x, derivative=0):
@@ -277,7 +288,7 @@ class CircularBody:
         """
         xq = np.asarray(x, float) - self.origin[0]
         rc = self._interp(xq)
-        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        inside = self._on_body(xq)
         r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
         zc = rc[..., 1] + self.origin[2]
         return np.stack([np.full_like(zc, self.origin[1]), zc], axis=-1), r
@@ -348,7 +359,7 @@ class CircularBody:
         p = np.asarray(points, float)
         xq = p[..., 0] - self.origin[0]
         rc = self._interp(xq)
-        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        inside = self._on_body(xq)
         r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
         d = np.hypot(p[..., 1] - self.origin[1], p[..., 2] - (rc[..., 1] + self.origin[2]))
         return d - r
@@ -362,7 +373,7 @@ class CircularBody:
         p = np.asarray(points, float)
         xq = p[..., 0] - self.origin[0]
         rc, drc = self._interp.value_and_slope(xq)
-        inside = (xq >= self.x[0]) & (xq <= self.x[-1])
+        inside = self._on_body(xq)
         r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)
         dr = np.where(inside, drc[..., 0], 0.0)
         dy = p[..., 1] - self.origin[1]
