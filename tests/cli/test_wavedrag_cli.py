@@ -155,3 +155,31 @@ def test_converge_refines_until_it_settles_and_says_how_far_the_start_was(capsys
     value = float(line.split("D/q ")[1].split(" +-")[0])
     ref = wavedrag(jc.read(PDAS_DECK), 1.2, n_x=final[0], n_theta=final[1])["D_over_q"]
     assert value == pytest.approx(ref, rel=1e-5)
+
+
+def test_harris_mode_and_its_switches(capsys):
+    from juncture.analysis import wavedrag
+    from juncture.analysis.harris import HarrisConventions
+
+    cfg = jc.read(EXAMPLE_DECK)
+    assert main(["wavedrag", str(EXAMPLE_DECK), "--harris", "--mach", "1.6", "--json",
+                 "--n-x", "41", "--n-theta", "8"]) == 0
+    cap = capsys.readouterr()
+    out = json.loads(cap.out)
+    assert "Harris conventions (linear_chordwise, sum_components" in out["method"]
+    with pytest.warns(jc.JunctureWarning):
+        expected = wavedrag(cfg, 1.6, 41, 8, method="harris")["D_over_q"]
+    assert out["D_over_q"] == pytest.approx(expected, rel=1e-12)
+    assert cap.err.count("root section lies inside") == 5  # wing, 3 fins, tail: once each
+    assert main(["wavedrag", str(EXAMPLE_DECK), "--harris", "--harris-off", "sum-components",
+                 "linear-chordwise", "--mach", "1.6", "--json", "--n-x", "41",
+                 "--n-theta", "8"]) == 0
+    off = json.loads(capsys.readouterr().out)
+    conv = HarrisConventions(linear_chordwise=False, sum_components=False)
+    assert off["D_over_q"] == pytest.approx(
+        wavedrag(cfg, 1.6, 41, 8, method="harris", conventions=conv)["D_over_q"], rel=1e-12)
+    for argv, match in ((["--harris-off", "half-turn"], "--harris-off: needs --harris"),
+                        (["--harris", "--fillet", "cubic"], "not with --fillet")):
+        assert main(["wavedrag", str(EXAMPLE_DECK), *argv]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and match in err[0]

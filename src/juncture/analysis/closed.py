@@ -347,7 +347,7 @@ def held_base_solids(cfg, x_far, n_theta=48):
 
 
 def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
-                    flow_through=True):
+                    flow_through=True, union=True):
     """Closed, outward networks of every component of a configuration, both halves.
 
     Parameters
@@ -359,6 +359,10 @@ def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
         Resampling of bodies (see :func:`body_solid`).
     flow_through : bool
         Add each open nacelle's capture streamtube, inward (see :func:`is_flow_through`).
+    union : bool
+        Trim wing-like components at the bodies they enter, so that a buried root counts
+        once; False: every component whole, so that cut areas are summed (the Harris
+        program's convention, :mod:`juncture.analysis.harris`).
 
     Returns
     -------
@@ -377,7 +381,7 @@ def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
     out = {}
     for comp in cfg:
         if isinstance(comp, WingLike):
-            nets = winglike_solid(comp, cfg.bodies, n_chord, n_span, n_cap)
+            nets = winglike_solid(comp, cfg.bodies if union else (), n_chord, n_span, n_cap)
         else:
             nets = body_solid(comp, n_theta, n_body)
         if flow_through and is_flow_through(comp):

@@ -104,7 +104,8 @@ def _fillet_mach(geo, x_cuts, thetas, mach):
     return out
 
 
-def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None):
+def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None,
+             method="juncture", conventions=None):
     """Area distribution and supersonic wave drag of a configuration (both halves).
 
     Parameters
@@ -133,6 +134,13 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None)
     half_turn : bool, optional
         Override the symmetry test (:func:`juncture.analysis._components.is_y_symmetric`;
         a Geometry without its model counts as not symmetric).
+    method : {"juncture", "harris"}
+        ``"harris"``: the Harris program's conventions for a deck (a Configuration only;
+        :mod:`juncture.analysis.harris`): straight lines between chordwise ordinates,
+        component areas summed, normal area as M = 1.000001, NTHETA + 1 angles over a half
+        turn with Boole's rule.
+    conventions : HarrisConventions, optional
+        With ``method="harris"``: which conventions apply (default: all).
 
     Returns
     -------
@@ -166,6 +174,10 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None)
     n_x, n_theta = int(n_x), int(n_theta)
     if n_x < 3:
         raise JunctureError(f"n_x must be at least 3, found {n_x}")
+    if method not in ("juncture", "harris"):
+        raise JunctureError(f"method must be 'juncture' or 'harris', found {method!r}")
+    if method == "harris":
+        return _harris(cfg, mach, n_x, n_theta, geometry, half_turn, conventions)
     completed = geometry is not None and getattr(geometry, "configuration", None) is not None \
         and "area_fillet" in getattr(geometry, "stations", {})
     source = cfg if geometry is None else (geometry.configuration if completed else geometry)
@@ -199,38 +211,74 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None)
                    components={k: _floats(v) for k, v in normal.items()
                                if k not in ("x", "total")})
     else:
-        mach = float(mach)
-        if not (np.isfinite(mach) and mach >= 1.0):
-            raise JunctureError(f"the far-field wave drag needs a Mach number >= 1, found "
-                                f"{mach}")
-        if n_theta < 1:
-            raise JunctureError(f"n_theta must be at least 1, found {n_theta}")
         half = (model and is_y_symmetric(source)) if half_turn is None else bool(half_turn)
-        count = n_theta if half else 2 * n_theta
-        thetas, weights = roll_angles(count, half)
-        x_cuts, cut_areas, mesh = _mach_plane_cuts(source, mach, n_x, thetas)
-        if mesh is None:  # M = 1 from the model: the cuts are the normal areas
-            x, area = x_cuts[0], cut_areas[0].copy()
-        else:  # the same triangles cut by the planes x = const
-            area = mesh.cut(mesh.heights(np.array([1.0, 0.0, 0.0])), x)
-            area = area + (held_base_area(source, x) if model else 0.0)
-        if fillets:
-            cut_areas = cut_areas + _fillet_mach(geometry, x_cuts, thetas, mach)
-            area = area + _fillet_normal(geometry, x)
-        ff = far_field_drag(cut_areas, x_cuts, thetas, weights=weights)
-        span = "a half turn" if half else "the full turn"
-        out.update(method=f"far-field (Harris), NTHETA {n_theta}: {thetas.size} roll angles "
-                          f"over {span}, {_rule_name(count, half)} rule",
-                   D_over_q=float(ff.d_over_q), x=_floats(x), area=_floats(area),
-                   components={}, thetas=_floats(thetas), theta_weights=_floats(weights),
-                   D_over_q_theta=_floats(ff.d_over_q_theta),
-                   x_cuts=np.asarray(x_cuts).tolist(), cut_areas=np.asarray(cut_areas).tolist())
+        out.update(_far_field(source, mach, n_x, n_theta, half,
+                              geometry=geometry if fillets else None))
     out["CD"] = None if ref is None else out["D_over_q"] / ref
     return out
 
 
+def _harris(cfg, mach, n_x, n_theta, geometry, half_turn, conventions):
+    """:func:`wavedrag` with the Harris program's conventions (a deck's components only)."""
+    from .harris import HarrisConventions, harris_model, harris_networks
+
+    if geometry is not None or not hasattr(cfg, "components"):
+        raise JunctureError("the Harris conventions apply to a deck's components (a "
+                            "Configuration), not to a completed geometry")
+    conv = HarrisConventions() if conventions is None else conventions
+    model = harris_model(cfg, conv)
+    networks = harris_networks(model, conv)
+    if mach is None or float(mach) == 1.0:
+        if conv.normal_mach is not None:
+            mach = conv.normal_mach
+        elif mach is None and networks is None:  # juncture's slender body of the model
+            return wavedrag(model, None, n_x, n_theta, half_turn=half_turn)
+        else:
+            mach = 1.0
+    half = True if conv.half_turn else (
+        is_y_symmetric(model) if half_turn is None else bool(half_turn))
+    on = [f for f, v in vars(conv).items() if v]
+    ref = float(cfg.reference_area) if cfg.reference_area else None
+    out = {"mach": float(mach), "reference_area": ref}
+    out.update(_far_field(model, mach, n_x, n_theta, half, networks=networks,
+                          label=f"far-field, Harris conventions ({', '.join(on) or 'none'})"))
+    out["CD"] = None if ref is None else out["D_over_q"] / ref
+    return out
+
+
+def _far_field(source, mach, n_x, n_theta, half, geometry=None, networks=None, label=None):
+    """The far-field part of :func:`wavedrag`'s result (``mach`` >= 1, roll angles ``half``)."""
+    mach = float(mach)
+    if not (np.isfinite(mach) and mach >= 1.0):
+        raise JunctureError(f"the far-field wave drag needs a Mach number >= 1, found {mach}")
+    if n_theta < 1:
+        raise JunctureError(f"n_theta must be at least 1, found {n_theta}")
+    model = hasattr(source, "components")
+    count = n_theta if half else 2 * n_theta
+    thetas, weights = roll_angles(count, half)
+    x_cuts, cut_areas, mesh = _mach_plane_cuts(source, mach, n_x, thetas, networks=networks)
+    x = default_stations(source, n_x)
+    if mesh is None:  # M = 1 from the model: the cuts are the normal areas
+        x, area = x_cuts[0], cut_areas[0].copy()
+    else:  # the same triangles cut by the planes x = const
+        area = mesh.cut(mesh.heights(np.array([1.0, 0.0, 0.0])), x)
+        area = area + (held_base_area(source, x) if model else 0.0)
+    if geometry is not None:
+        cut_areas = cut_areas + _fillet_mach(geometry, x_cuts, thetas, mach)
+        area = area + _fillet_normal(geometry, x)
+    ff = far_field_drag(cut_areas, x_cuts, thetas, weights=weights)
+    span = "a half turn" if half else "the full turn"
+    method = label or "far-field (Harris)"
+    return dict(method=f"{method}, NTHETA {n_theta}: {thetas.size} roll angles over {span}, "
+                       f"{_rule_name(count, half)} rule",
+                D_over_q=float(ff.d_over_q), x=_floats(x), area=_floats(area), components={},
+                thetas=_floats(thetas), theta_weights=_floats(weights),
+                D_over_q_theta=_floats(ff.d_over_q_theta), x_cuts=np.asarray(x_cuts).tolist(),
+                cut_areas=np.asarray(cut_areas).tolist())
+
+
 def converged_wavedrag(cfg, mach=None, n_x=101, n_theta=16, tolerance=5e-3, max_doublings=4,
-                       geometry=None):
+                       geometry=None, **options):
     """Wave drag refined until it settles: n_x doubled (its intervals) until D/q changes by
     less than ``tolerance`` (relative), then, for a far-field run, n_theta the same way.
 
@@ -243,7 +291,8 @@ def converged_wavedrag(cfg, mach=None, n_x=101, n_theta=16, tolerance=5e-3, max_
     history = []
 
     def run(nx, nt):
-        value = wavedrag(cfg, mach, n_x=nx, n_theta=nt, geometry=geometry)["D_over_q"]
+        value = wavedrag(cfg, mach, n_x=nx, n_theta=nt, geometry=geometry,
+                         **options)["D_over_q"]
         history.append([nx, nt, value])
         return value
 

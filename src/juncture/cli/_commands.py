@@ -242,6 +242,7 @@ def wavedrag(args, progress):
              "a fillet there is no added area to compensate)")
     if args.slender_body and args.mach is not None:
         fail("argument --slender-body: not with --mach (one or the other)")
+    options = _harris_options(args, fillet)
     cfg = read_configuration(args.deck, "wavedrag")
     out = None if args.output is None else output_dir(args.output)
     runs = mach_runs(cfg, args.mach, args.n_x, args.n_theta, args.slender_body)
@@ -256,7 +257,8 @@ def wavedrag(args, progress):
                 if label not in geometries:
                     geometries[label] = geometry()
                 results[label] = wave_drag(cfg, run["mach"], n_x=run["n_x"],
-                                           n_theta=run["n_theta"], geometry=geometries[label])
+                                           n_theta=run["n_theta"], geometry=geometries[label],
+                                           **options)
             per_run.append((run, results))
     if not args.json:
         _say(args, cfg.title)
@@ -266,11 +268,27 @@ def wavedrag(args, progress):
     status = _print_wavedrag(args, per_run[0][1], out, cfg.title) if len(per_run) == 1 \
         else _print_mach_cases(args, per_run, out, cfg.title)
     if args.converge is not None:
-        _converge(args, cfg, runs, geometries.get("original"), progress)
+        _converge(args, cfg, runs, geometries.get("original"), progress, options)
     return status
 
 
-def _converge(args, cfg, runs, geometry, progress):
+def _harris_options(args, fillet):
+    """wavedrag()'s method and conventions for --harris / --harris-off."""
+    if args.harris_off and not args.harris:
+        fail("argument --harris-off: needs --harris")
+    if not args.harris:
+        return {}
+    if fillet is not None:
+        fail("argument --harris: analyses the deck's components as the Harris program does; "
+             "not with --fillet")
+    from ..analysis.harris import HarrisConventions
+
+    off = {name.replace("-", "_"): (None if name == "normal-mach" else False)
+           for name in args.harris_off}
+    return {"method": "harris", "conventions": HarrisConventions(**off)}
+
+
+def _converge(args, cfg, runs, geometry, progress, options):
     """--converge: each run refined (analysis.converged_wavedrag), one line each, and a
     warning where the chosen resolution is off by more than 1 %."""
     import warnings
@@ -282,7 +300,7 @@ def _converge(args, cfg, runs, geometry, progress):
         for run in runs:
             bar.step(run["case"] or "convergence")
             c = converged_wavedrag(cfg, run["mach"], run["n_x"], run["n_theta"],
-                                   tolerance=args.converge, geometry=geometry)
+                                   tolerance=args.converge, geometry=geometry, **options)
             label = (run["case"] + ": ") if run["case"] else ""
             state = "converged" if c["converged"] else "NOT converged"
             print(f"{label}{state}: D/q {c['D_over_q']:.6g} +- {c['error']:.3g} at n_x "

@@ -94,6 +94,10 @@ def _mach(text):
     return value
 
 
+#: the Harris program's conventions, as --harris-off names them
+HARRIS_CONVENTIONS = ("linear-chordwise", "sum-components", "normal-mach", "half-turn")
+
+
 def _common():
     """Flags every command takes (after the command name as well as before it)."""
     p = argparse.ArgumentParser(add_help=False)
@@ -202,6 +206,14 @@ def build_parser(version):
                    "chosen resolution was off")
     s.add_argument("--slender-body", action="store_true",
                    help="slender-body wave drag of the normal areas, whatever the case cards")
+    s.add_argument("--harris", action="store_true",
+                   help="the Harris program's conventions: straight lines between chordwise "
+                   "ordinates, component areas summed (no union), normal area as M = "
+                   "1.000001, NTHETA + 1 angles over a half turn with Boole's rule")
+    s.add_argument("--harris-off", nargs="+", default=(), metavar="CONVENTION",
+                   choices=HARRIS_CONVENTIONS,
+                   help="with --harris, leave these conventions out: "
+                   + ", ".join(HARRIS_CONVENTIONS))
     s.add_argument("--fillet", choices=("none", "cubic", "circular"), default="none",
                    help="also analyse the configuration with this wing-body fillet")
     s.add_argument("--keep-area", action="store_true",
