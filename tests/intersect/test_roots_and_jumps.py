@@ -130,3 +130,26 @@ def test_a_hint_that_brackets_a_jump_falls_back_to_the_whole_line():
     cr = find_crossings(lines, error, -0.5, hint=hint)
     assert cr.found.all()
     np.testing.assert_allclose(cr.points[:, 0], 3.25, rtol=0, atol=1e-12)
+
+
+def test_a_search_that_runs_out_of_iterations_names_its_lines(monkeypatch):
+    import juncture.intersect.body as body_module
+    from juncture.errors import ConvergenceError
+    from juncture.intersect import rays
+    from tests.support import wing_body
+
+    lines = np.array([[[0.0, 0.0, 0.0], [0.0, 5.0, 0.0]]] * 3)  # root inside, tip outside
+    with pytest.raises(ConvergenceError, match=r"did not converge in 3 iterations \(line 1, 2, 3\)"):
+        rays.find_crossings(lines, lambda p: (np.linalg.norm(p, axis=-1) - 1.0) ** 3, 0.0,
+                            max_iter=3)  # a triple root: no method closes it in 3 steps
+
+    def stuck(*args, **kwargs):
+        raise rays._not_converged(200, [2, 15])
+
+    cfg = wing_body()
+    monkeypatch.setattr(body_module, "find_crossings", stuck)
+    n = cfg["wing"].n_stations
+    with pytest.raises(ConvergenceError) as err:
+        body_module.intersect_body_both(cfg["wing"], cfg["body"])
+    assert str(err.value).startswith("wing: the intersection with body did not converge "
+                                     f"(upper lofting line 3, lower lofting line {15 - n + 1})")

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import GeometryError
+from ..errors import ConvergenceError, GeometryError
 from ..model import ArbitraryBody, CircularBody, WingLike
 from .rays import SurfaceBound, find_crossings
 
@@ -160,7 +160,16 @@ def _intersect(wing, body, sides, samples_per_section, hints):
         bound = SurfaceBound(body)
     else:
         bound = body.error_lipschitz
-    cr = find_crossings(lines, error, u_low, samples_per_section, lipschitz=bound, hint=hint)
+    try:
+        cr = find_crossings(lines, error, u_low, samples_per_section, lipschitz=bound,
+                            hint=hint)
+    except ConvergenceError as exc:
+        n = wing.n_stations
+        which = ", ".join(f"{side_label(wing, sides[r // n])} lofting line {r % n + 1}"
+                          for r in getattr(exc, "rows", [])[:4])
+        raise ConvergenceError(f"the intersection with {body.name} did not converge ({which}):"
+                               " the line grazes the body; move one of them slightly",
+                               wing.name) from None
     tip_inside = cr.start_error <= 0  # NaN (a hinted line) compares False
     if np.any(tip_inside):
         j = int(np.argmax(tip_inside))

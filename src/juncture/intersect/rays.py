@@ -107,16 +107,27 @@ class Crossings:
     jumps: np.ndarray = None
 
 
+def _not_converged(max_iter, rows):
+    """The error of a root search that ran out of iterations; ``rows``: the lines still open
+    (0-based, kept on the exception as ``rows`` for the caller to name)."""
+    rows = [int(r) for r in np.atleast_1d(rows)]
+    shown = ", ".join(str(r + 1) for r in rows[:5]) + (", ..." if len(rows) > 5 else "")
+    exc = ConvergenceError(f"lofting-line intersection did not converge in {max_iter} "
+                           f"iterations (line {shown})")
+    exc.rows = rows
+    return exc
+
+
 def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
     """Close brackets [a (outside, f > 0), b (inside, f <= 0)] by Illinois regula falsi."""
     m = len(a)
     side = np.zeros(m, int)
     it = 0
+    rows = None
     while act.any():
         it += 1
         if it > max_iter:
-            raise ConvergenceError(f"lofting-line intersection did not converge in {max_iter} "
-                                   "iterations")
+            raise _not_converged(max_iter, np.flatnonzero(act) if rows is None else rows)
         with np.errstate(invalid="ignore", divide="ignore"):
             c = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
         bad = ~np.isfinite(c) | ((c - a) * (c - b) > 0)
@@ -169,8 +180,7 @@ def _newton(lines, error, a, b, fa, fb, act, rtol, max_iter, start=None):
     while rows.size:
         it += 1
         if it > max_iter:
-            raise ConvergenceError(f"lofting-line intersection did not converge in {max_iter} "
-                                   "iterations")
+            raise _not_converged(max_iter, np.flatnonzero(act) if rows is None else rows)
         ur = u[rows]
         lr = lines[rows]
         e, g = _call_gradient(error, polyline_points(lr, ur[:, None])[:, 0], rows)

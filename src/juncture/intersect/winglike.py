@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import GeometryError
+from ..errors import ConvergenceError, GeometryError
 from .body import BodyIntersection, side_label
 from .rays import find_crossings, root_tolerance
 
@@ -111,7 +111,13 @@ def intersect_winglike(a, b, side_b="upper", side_a="upper", from_root=None,
                             f"{'above' if sign < 0 else 'below'} the {side_b} surface of "
                             f"{b.name}: cannot tell where the two meet", a.name)
     atol = root_tolerance(lines, b.section_points("upper"), b.section_points("lower"))
-    cr = find_crossings(lines, error, -float(reach), samples_per_section, atol=atol)
+    try:
+        cr = find_crossings(lines, error, -float(reach), samples_per_section, atol=atol)
+    except ConvergenceError as exc:
+        which = ", ".join(str(r + 1) for r in getattr(exc, "rows", [])[:4])
+        raise ConvergenceError(f"the intersection with the {side_b} surface of {b.name} did "
+                               f"not converge ({side_label(a, side_a)} lofting line {which}): "
+                               "the line grazes it; move one of them slightly", a.name) from None
     u = cr.u if not from_root else (n - 1) - cr.u
     name = f"{a.name}/{b.name} {side_label(a, side_a)}"
     log = []
