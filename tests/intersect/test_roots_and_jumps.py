@@ -139,7 +139,8 @@ def test_a_search_that_runs_out_of_iterations_names_its_lines(monkeypatch):
     from tests.support import wing_body
 
     lines = np.array([[[0.0, 0.0, 0.0], [0.0, 5.0, 0.0]]] * 3)  # root inside, tip outside
-    with pytest.raises(ConvergenceError, match=r"did not converge in 3 iterations \(line 1, 2, 3\)"):
+    stop = r"did not converge in 3 iterations \(line 1, 2, 3\)"
+    with pytest.raises(ConvergenceError, match=stop):
         rays.find_crossings(lines, lambda p: (np.linalg.norm(p, axis=-1) - 1.0) ** 3, 0.0,
                             max_iter=3)  # a triple root: no method closes it in 3 steps
 
