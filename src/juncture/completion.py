@@ -152,7 +152,8 @@ def _fillet_maker(wing, fillet, opts, body0):
                     ended_lines(cubic_fillet(wing, body, il, upper_reference=iu,
                                              blend_range=ranges[1], **kw), lo, lo.missed))
         if fillet == "circular":
-            kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points)
+            kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points,
+                      tangent=opts.circular_tangent)
             up, lo = (previous[2].u_end, previous[3].u_end) if warm else (None, None)
             return (iu, il,
                     circular_fillet(wing, body, iu, rho, hint=up, blend_range=ranges[0], **kw),

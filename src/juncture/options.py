@@ -56,6 +56,8 @@ _RULES = {
     "single_network": (lambda v: isinstance(v, bool), "True or False"),
     "tolerance": (lambda v: _number(v, 0.0, 1.0), "a relative tolerance in (0, 1)"),
     "compensation": (lambda v: v in ("section", "fillet"), "one of 'section', 'fillet'"),
+    "circular_tangent": (lambda v: v in ("section", "lofting-line"),
+                         "one of 'section', 'lofting-line'"),
     "wing": (lambda v: isinstance(v, str) and v != "", "a component name"),
     "body": (lambda v: isinstance(v, str) and v != "", "a component name"),
     "pairs": (lambda v: isinstance(v, tuple), "a tuple of (a, b, role)"),
@@ -98,8 +100,10 @@ def check_combination(fillet, keep_area, opts, given=()):
                           "area to compensate: choose fillet='cubic' or 'circular')")
     set_ = set(given) | {k for k in ("end_value", "remedy", "fillet_radius", "blend_length")
                          if getattr(opts, k) is not None}
+    if opts.circular_tangent != "section":
+        set_.add("circular_tangent")
     only = {"theta_u_deg": "cubic", "end": "cubic", "end_value": "cubic", "remedy": "cubic",
-            "fillet_radius": "circular"}
+            "fillet_radius": "circular", "circular_tangent": "circular"}
     for name, kind in only.items():
         if name in set_ and fillet != kind:
             raise OptionError(name, getattr(opts, name),
@@ -135,6 +139,11 @@ class CompleteOptions:
         Low-wing dip remedy for the cubic fillet.
     fillet_radius : float or None
         Circular fillet radius rho [deck length]; None: 10 % of the largest body radius.
+    circular_tangent : {"section", "lofting-line"}
+        Circular fillet: at its end on the lofting line the arc is tangent to the wing's own
+        section by the plane x = const ("section": it cannot dip into the wing), or to the
+        lofting line projected on that plane, as TM-4406 constructs it ("lofting-line"; on a
+        swept wing it enters the wing where the thickness changes along the chord).
     n_fillet_points : int
         Points per fillet line.
     blocks : {None, 4, 6, "split"}
@@ -177,6 +186,7 @@ class CompleteOptions:
     blending: str = "scale"
     remedy: str | None = None
     fillet_radius: float | None = None
+    circular_tangent: str = "section"
     n_fillet_points: int = 9
     blocks: object = None
     single_network: bool = False

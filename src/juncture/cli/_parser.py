@@ -22,7 +22,8 @@ COMPLETE_FLAGS = {"theta_u": ("theta_u_deg", "--theta-u"), "end": ("end", "--end
                   "radius": ("fillet_radius", "--radius"), "remedy": ("remedy", "--remedy"),
                   "blocks": ("blocks", "--blocks"),
                   "single_network": ("single_network", "--single-network"),
-                  "compensate": ("compensation", "--compensate")}
+                  "compensate": ("compensation", "--compensate"),
+                  "circular_tangent": ("circular_tangent", "--circular-tangent")}
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -155,6 +156,10 @@ def _complete_parser(sub, common, extensions):
                    "the largest body radius), else a fraction in (0, 1] (default 0.5)")
     s.add_argument("--blend-length", type=_float("blend_length", "a length > 0"),
                    help="LE/TE blending length l_b > 0 (default: a tenth of the root's x extent)")
+    s.add_argument("--circular-tangent", choices=("section", "lofting-line"),
+                   help="circular fillet: the arc is tangent to the wing's own section in the "
+                   "plane x = const (default; it cannot dip into the wing) or to the lofting "
+                   "line projected on it (TM-4406's construction)")
     s.add_argument("--radius", type=_float("fillet_radius", "a radius > 0"),
                    help="circular fillet radius rho > 0 (default: 10 %% of the largest body "
                    "radius)")

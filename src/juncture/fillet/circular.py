@@ -49,7 +49,8 @@ def arcs(body, P, C, rho, n_points):
     """Arcs of radius rho (k,) about C (k, 3) from the body to P (k, 3), in the planes x = P_x.
 
     The arc starts at T, the body point towards C (where a circle about C of radius rho
-    touches the body when |C - centre| = r + rho), and runs the short way round to P.
+    touches the body when |C - centre| = r + rho), and runs the short way round to P; its
+    first and last points are T and P exactly.
     Returns ``(points (k, n_points, 3), T (k, 3), theta_T (k,))``.
     """
     x = P[:, 0]
@@ -64,6 +65,11 @@ def arcs(body, P, C, rho, n_points):
     pts = np.stack([np.broadcast_to(x[:, None], ang.shape),
                     C[:, 1, None] + rho[:, None] * np.cos(ang),
                     C[:, 2, None] + rho[:, None] * np.sin(ang)], axis=-1)
+    # The ends are the body point and P themselves, bit for bit, so that the seams with the
+    # body and wing networks are exact whatever the residual of the tangency solve.
+    live = rho > 0  # (a zero radius: a degenerate arc, all at P)
+    pts[live, 0] = T[live]
+    pts[:, -1] = P
     return pts, T, th
 
 
@@ -80,8 +86,20 @@ def _lipschitz(body, radius):
     return SurfaceBound(body)
 
 
+def _section_normals(wing, side, sign):
+    """normal(points) -> (..., 3): the normal, in the plane x = const and away from the wing,
+    of the wing's own section by that plane at points on its surface (juncture's default; the
+    paper's normal is the projected lofting line's)."""
+    from .planar import section_tangent
+
+    def normal(points):
+        t = section_tangent(wing, side, points[..., 0], points[..., wing.span_axis])
+        return np.stack([np.zeros(t.shape[:-1]), -t[..., 2], t[..., 1]], axis=-1) * sign
+    return normal
+
+
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
-                    n_points=9, hint=None, blend_range=None):
+                    n_points=9, hint=None, blend_range=None, tangent="section"):
     """Circular-arc fillet lines of radius ``radius`` for one surface.
 
     Parameters
@@ -104,6 +122,12 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     hint : (n_stations,) float, optional
         Tangency points' section coordinates (``u_end``) of a previous solve on a body that
         contained this one: the search starts there.
+    tangent : {"section", "lofting-line"}
+        What the arc is tangent to at its end P on the lofting line, in the plane x = P_x:
+        the wing's own section by that plane (default: the arc then leaves the wing surface
+        along it and cannot dip into the wing; past the paper), or the lofting line
+        projected on the plane, as TM-4406 constructs it (on a swept wing whose thickness
+        changes along the chord the two differ, and the paper's arc enters the wing).
 
     Returns
     -------
@@ -114,6 +138,9 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     """
     side = inter.side
     sign = 1.0 if side == "upper" else -1.0
+    if tangent not in ("section", "lofting-line"):
+        raise GeometryError(f"tangent must be 'section' or 'lofting-line', found {tangent!r}",
+                            wing.name)
     rho_of = radius if callable(radius) else (lambda x: np.full_like(np.asarray(x, float),
                                                                      float(radius)))
     lines = wing.lofting_lines(side)
@@ -137,17 +164,20 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         k = len(ln)
 
         offset = bb[:, None] * nn  # rho = 1: C = P + rho beta n
+        on_section = _section_normals(wing, side, sign) if tangent == "section" else None
 
         def error(points, rows):
             # |C - centre| - r(x) - rho beta: the body's radial error at C, less rho beta.
             rows = np.asarray(rows)
             shape = (len(rows),) + (1,) * (points.ndim - 2)
             rho = bb[rows].reshape(shape) * rho_of(points[..., 0])
-            c = points + rho[..., None] * nn[rows].reshape(shape + (3,))
+            normal = (nn[rows].reshape(shape + (3,)) if on_section is None
+                      else on_section(points))
+            c = points + rho[..., None] * normal
             return body.radial_error(c) - rho
 
         error.row_aware = True
-        if not callable(radius):
+        if not callable(radius) and on_section is None:
             # Constant rho: C moves with P, so the gradient is the body's at C.
             def value_and_gradient(points, rows):
                 step = float(radius) * offset[rows]
@@ -159,7 +189,10 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         # when n is radial): I is never outside, so the crossing coming inboard from the tip
         # is found before it and the search stops there.
         u_low = np.where(inter.found[live], inter.u[live], -1.0)
-        cr = find_crossings(ln, error, u_low, lipschitz=_lipschitz(body, radius),
+        # With the section's normal, C also turns with P (the section's curvature): no slope
+        # bound is known, so the lines are sampled densely.
+        bound = _lipschitz(body, radius) if on_section is None else None
+        cr = find_crossings(ln, error, u_low, lipschitz=bound,
                             hint=None if hint is None else np.asarray(hint, float)[live])
         log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "
                    f"{k} lofting lines in {cr.iterations} iterations")
@@ -172,7 +205,7 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         rows = idx[ok]
         x = P[:, 0]
         rho = beta[rows] * rho_of(x)
-        C = P + rho[:, None] * n[rows]
+        C = P + rho[:, None] * (n[rows] if on_section is None else on_section(P))
         pts[rows], T, th = arcs(body, P, C, rho, n_points)
         start[rows], E[rows], theta_b[rows], u_end[rows] = T, P, th, cr.u[ok]
         beta = beta.copy()
