@@ -19,7 +19,7 @@ import pytest
 import juncture as jc
 from juncture.intersect import intersect_body_both
 from juncture.misses import line_ends
-from juncture.networks import split_counts
+from juncture.surface.networks import split_counts
 from tests.deckgen.references import WingLikeRef
 from tests.support import wing_body
 

@@ -6,6 +6,7 @@ Public API::
     cfg = jc.read("deck.inp")        # wave-drag deck, LaWGS or juncture JSON, by content
     geo = jc.complete(cfg, fillet="cubic", keep_area=True)
     jc.write(geo, "out.wgs")         # by extension: .wgs .p3d .hess .stl .vtu .vtk .inp ...
+    surface = jc.mesh(geo)           # one closed triangulated surface (both halves)
     df = jc.sweep("study.toml")      # a design study: one row per case (pandas DataFrame)
 
 Axes as in the wave-drag deck: x aft, y to starboard, z up; only the y >= 0 half is described.
@@ -30,7 +31,8 @@ __version__ = "0.1.0"
 
 # name -> module that defines it, imported on first access
 _LAZY = {"read": ".io", "write": ".io", "complete": ".completion",
-         "CompleteOptions": ".options", "Geometry": ".geometry", "sweep": ".study"}
+         "CompleteOptions": ".options", "Geometry": ".geometry", "sweep": ".study",
+         "mesh": ".surface.assemble"}
 
 __all__ = [
     "read",
@@ -39,6 +41,7 @@ __all__ = [
     "CompleteOptions",
     "Geometry",
     "sweep",
+    "mesh",
     "JunctureError",
     "DeckError",
     "GeometryError",

@@ -28,8 +28,8 @@ from .geometry import Geometry
 from .intersect import intersect_body_both
 from .misses import ended_lines, line_ends
 from .model import CircularBody, Configuration
-from .networks import body_range, juncture_networks, split_counts
 from .options import CompleteOptions, check_combination
+from .surface.networks import body_range, juncture_networks, split_counts
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 
@@ -164,7 +164,7 @@ def _fillet_maker(wing, fillet, opts, body0):
 
 def _with_empennage(cfg, wing, opts):
     """``cfg`` with two-section canards, fins, tails and pylons interpolated (TM-4607)."""
-    from .component_networks import interpolated
+    from .surface.component_networks import interpolated
 
     work = cfg
     for comp in cfg.wings:
@@ -179,10 +179,10 @@ def _other_components(cfg, wing, body, opts, log, known=None):
     ``known``: intersections found before the fuselage was re-designed; only the pairs with
     the fuselage are solved again.
     """
-    from .component_networks import nacelle_network, trimmed_networks
     from .intersect import find_intersections
     from .intersect.pairs import intersect_pair
     from .model import WingLike
+    from .surface.component_networks import nacelle_network, trimmed_networks
 
     work = _with_empennage(cfg, wing, opts)
     if known is None:
@@ -222,7 +222,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
             if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
                 plane = "xz"  # a centre-line body described by its y >= 0 half
         nets.update({k: (v, plane) for k, v in mine.items()})
-    from .body_split import seam_gap
+    from .surface.body_split import seam_gap
 
     for pod_name, lines in pylons.items():
         pod_net = nets[pod_name][0]
@@ -235,7 +235,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
 
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
-    from .body_split import Boundary, boundary_from_points, seam_gap, split_body
+    from .surface.body_split import Boundary, boundary_from_points, seam_gap, split_body
 
     ups = [Boundary(fu.start[:, 0], fu.theta_start, "wing", fu.start)]
     los = [Boundary(fl.start[:, 0], fl.theta_start, "wing", fl.start)]
@@ -401,14 +401,14 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     else:
         nets, seams = juncture_networks(wing, body, fu, fl, layout, n_half, net_stations)
     if traces and f"{wing.name} upper" in nets and layout != 4:
-        from .component_networks import add_trace_curves, trace_curve
+        from .surface.component_networks import add_trace_curves, trace_curve
 
         curves = [(side, trace_curve(wing, side, line)) for side, line in traces]
         nets.update(add_trace_curves(wing, {k: nets[k] for k in
                                             (f"{wing.name} upper", f"{wing.name} lower")},
                                      curves))
         log.append(f"{len(curves)} curves traced on {wing.name} where fins or pylons meet it")
-        from .body_split import polyline_gap
+        from .surface.body_split import polyline_gap
 
         for name, pts in other_inters.items():
             if name.split("/")[1].startswith(f"{wing.name} "):

@@ -48,7 +48,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .intersect.rays import polyline_points
-from .networks import body_range
+from .surface.networks import body_range
 
 __all__ = ["LineEnds", "line_ends", "plane_points", "ended_lines"]
 

@@ -52,7 +52,7 @@ import numpy as np
 from .fillet.planar import planar_arcs as _planar_arcs
 from .fillet.planar import planform as _planform
 from .intersect.rays import SurfaceBound, find_crossings, polyline_points
-from .networks import layout_pieces, orient, radial_outward
+from .surface.networks import layout_pieces, orient, radial_outward
 
 __all__ = ["single_network", "line_end_at", "interpolated_lines", "planar_arcs_at",
            "reinterpolated"]
@@ -464,7 +464,7 @@ def single_network(wing, body, upper, lower, n_half=None, stations=None):
     """Fuselage as one network (TM-4406 fig 5) plus the two wing networks (6-block style).
 
     ``upper`` and ``lower`` must start at the same stations (re-interpolated). Returns
-    ``(networks, seams)`` as :func:`juncture.networks.juncture_networks`.
+    ``(networks, seams)`` as :func:`juncture.surface.networks.juncture_networks`.
     """
     pc = layout_pieces(wing, body, upper, lower, n_half, stations)
     n_below = pc["n_below"]

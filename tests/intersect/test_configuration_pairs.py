@@ -129,7 +129,7 @@ def test_interpolated_empennage_sections_lie_on_the_input_loft():
 
 
 def test_wing_gets_curves_where_pylons_meet_it():
-    from juncture.component_networks import trace_curve
+    from juncture.surface.component_networks import trace_curve
 
     cfg = example()
     geo = jc.complete(cfg, "cubic")
@@ -288,7 +288,7 @@ def test_an_explicit_pair_that_does_not_touch_is_refused():
 
 
 def test_trace_curve_refuses_a_line_without_points():
-    from juncture.component_networks import trace_curve
+    from juncture.surface.component_networks import trace_curve
 
     cfg = example()
     with pytest.raises(jc.GeometryError, match=r"wing: no intersection point to trace on "

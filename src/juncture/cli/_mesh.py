@@ -24,9 +24,9 @@ def add_parser(sub, common):
 def run(args, progress):
     """Complete, assemble, check; write only a mesh that is closed and oriented."""
     from ..completion import complete
-    from ..mesh.assemble import assemble
-    from ..mesh.quality import summarize
-    from ..mesh.write import write_mesh
+    from ..surface.assemble import assemble
+    from ..surface.quality import summarize
+    from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration
     from ._parser import COMPLETE_FLAGS, fail
 

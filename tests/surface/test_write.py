@@ -5,9 +5,9 @@ import pytest
 
 from juncture.errors import JunctureError
 from juncture.geometry import Geometry
-from juncture.mesh.assemble import assemble
-from juncture.mesh.write import write_mesh
-from tests.mesh.test_assemble import _prism
+from juncture.surface.assemble import assemble
+from juncture.surface.write import write_mesh
+from tests.surface.test_assemble import _prism
 
 
 def _two_pods():

@@ -47,7 +47,7 @@ class Boundary:
 
 def boundary_from_points(body, points, name=""):
     """A Boundary through points lying on ``body`` (NaN rows skipped)."""
-    from .intersect.body import _body_angle
+    from ..intersect.body import _body_angle
 
     ok = np.all(np.isfinite(points), axis=1)
     return Boundary(points[ok, 0], _body_angle(body, points[ok]), name)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from juncture.geometry import Geometry
-from juncture.mesh.assemble import assemble, cap_polygon
+from juncture.surface.assemble import assemble, cap_polygon
 
 
 def _prism(n_theta=24, n_x=7, length=5.0, radius=1.5, mirror=False):

@@ -20,9 +20,9 @@ import warnings
 
 import numpy as np
 
-from .errors import GeometryError, JunctureWarning
-from .intersect.body import side_label
-from .intersect.winglike import wing_parameters
+from ..errors import GeometryError, JunctureWarning
+from ..intersect.body import side_label
+from ..intersect.winglike import wing_parameters
 
 __all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike",
            "trace_curve", "add_trace_curves"]

@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 
 from juncture.geometry import Geometry
-from juncture.mesh.assemble import SurfaceMesh, assemble
-from juncture.mesh.quality import summarize, triangle_angles
-from tests.mesh.test_assemble import _prism
+from juncture.surface.assemble import SurfaceMesh, assemble
+from juncture.surface.quality import summarize, triangle_angles
+from tests.surface.test_assemble import _prism
 
 
 def test_angles_of_known_triangles():

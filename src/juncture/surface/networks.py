@@ -35,7 +35,7 @@ def body_range(body):
     A circular body is parameterised by theta (-pi/2, pi/2, 0 on the horizontal), an
     arbitrary-section body by normalised arc length (0 bottom, 1 top, 0.5 half-way).
     """
-    from .model import CircularBody
+    from ..model import CircularBody
 
     if isinstance(body, CircularBody):
         return -0.5 * np.pi, 0.5 * np.pi, 0.0
@@ -180,7 +180,7 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
         ``{"a", "b", "seam", "max_gap", "points"}`` for every pair of networks that abut, the
         largest distance between their corresponding boundary points [deck length].
     """
-    from .errors import GeometryError
+    from ..errors import GeometryError
 
     if blocks not in (4, 6):
         raise GeometryError(f"blocks must be 4 or 6, found {blocks!r}")

@@ -1,6 +1,6 @@
 """What a surface mesh is: closed or not, oriented or not, and its triangles' shape.
 
-These are the quick topological checks :func:`juncture.mesh.assemble.assemble`'s output is
+These are the quick topological checks :func:`juncture.surface.assemble.assemble`'s output is
 held to before it is written: every edge in exactly two triangles, used once in each
 direction (consistent orientation), positive enclosed volume, and the angles of the
 triangles. They are exact (integer vertex ids), so they need no tolerance.
@@ -70,7 +70,7 @@ class MeshSummary:
 
 
 def summarize(mesh):
-    """The :class:`MeshSummary` of a :class:`~juncture.mesh.assemble.SurfaceMesh`."""
+    """The :class:`MeshSummary` of a :class:`~juncture.surface.assemble.SurfaceMesh`."""
     t = mesh.triangles.astype(np.int64)
     directed = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
     undirected = np.sort(directed, axis=1)

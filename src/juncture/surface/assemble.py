@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["SurfaceMesh", "assemble", "boundary_loops", "cap_polygon", "strip_cap"]
+__all__ = ["SurfaceMesh", "assemble", "mesh", "boundary_loops", "cap_polygon", "strip_cap"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -336,3 +336,30 @@ def assemble(geometry, mirror=True, cap=True):
             surface = np.concatenate([surface, np.full(len(tri), surfaces.index(name))])
     return SurfaceMesh(vertices, triangles, component, surface, components, surfaces,
                        tuple(open_loops))
+
+
+def mesh(geometry, mirror=True, cap=True, check=True):
+    """One closed, consistently oriented triangulated surface of a completed geometry.
+
+    ``juncture.mesh(geo)``: :func:`assemble` (both halves unless ``mirror=False``, planar
+    open loops capped unless ``cap=False``), then, with ``check``, the topological checks of
+    :func:`juncture.surface.quality.summarize`: a surface with an open or non-manifold edge,
+    an inconsistently oriented edge or an open loop is refused with a
+    :class:`~juncture.errors.GeometryError` that says what is open.
+
+    Returns
+    -------
+    SurfaceMesh
+        ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
+        ``wetted_area()``.
+    """
+    from ..errors import GeometryError
+    from .quality import summarize
+
+    surface = assemble(geometry, mirror=mirror, cap=cap)
+    if check:
+        summary = summarize(surface)
+        if not summary.closed or summary.open_loops:
+            fails = [line[6:] for line in summary.lines() if line.startswith("FAIL")]
+            raise GeometryError("the completed surface is not closed: " + "; ".join(fails))
+    return surface

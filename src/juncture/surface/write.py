@@ -1,4 +1,4 @@
-"""Writers of a :class:`~juncture.mesh.assemble.SurfaceMesh`: STL, Gmsh, VTU.
+"""Writers of a :class:`~juncture.surface.assemble.SurfaceMesh`: STL, Gmsh, VTU.
 
 - **STL** binary (default): float32 triangles, the facet normal computed from the vertices
   in double precision, and the triangle's component index in the 16-bit attribute word (the

@@ -1,1 +1,0 @@
-"""Meshes of the completed airplane: assembly of the networks into one surface, checks."""

@@ -1,0 +1,11 @@
+"""The completed airplane's surface, as the next tool takes it.
+
+==========================  ==================================================================
+``networks``                TM-4406's juncture blocks (4 or 6) and their orientation
+``body_split``              TM-4607's fuselage split by theta_b(x) through the touching parts
+``component_networks``      the other components' networks, trimmed at their intersections
+``assemble``                one triangulated surface of every network, both halves (:func:`mesh`)
+``quality``                 closed, manifold, oriented; volume, wetted area, angles
+``write``                   STL, Gmsh, VTU with component ids
+==========================  ==================================================================
+"""
