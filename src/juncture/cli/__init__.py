@@ -24,13 +24,13 @@ def bundled_example(name="supersonic_transport.inp"):
 
 
 def _command_table():
+    from . import _check, _mesh, _sweep
     from . import _commands as c
-    from . import _mesh, _sweep
     from ._demo import demo
 
     return {"info": c.info, "convert": c.convert, "complete": c.complete,
             "wavedrag": c.wavedrag, "massprops": c.massprops, "blend": c.blend, "demo": demo,
-            "mesh": _mesh.run, "sweep": _sweep.run}
+            "mesh": _mesh.run, "sweep": _sweep.run, "check": _check.run}
 
 
 def _oserror(exc):

@@ -25,6 +25,7 @@ def run(args, progress):
     """Complete, assemble, check; write only a mesh that is closed and oriented."""
     from ..completion import complete
     from ..surface.assemble import assemble
+    from ..surface.check import check_mesh
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration
@@ -35,7 +36,7 @@ def run(args, progress):
         if not hasattr(args, dest):
             setattr(args, dest, None)
     opts = _complete_options(args, fillet)
-    with progress(3, "mesh") as bar:
+    with progress(4, "mesh") as bar:
         bar.step("read and complete")
         cfg = read_configuration(args.deck, "mesh")
         geo = complete(cfg, fillet, args.keep_area, options=opts)
@@ -45,11 +46,18 @@ def run(args, progress):
         if not summary.closed or summary.open_loops:
             fail("the completed surface is not closed, so no mesh was written: "
                  + "; ".join(line[6:] for line in summary.lines() if line.startswith("FAIL")))
+        bar.step("check (exact predicates)")
+        report = check_mesh(mesh.vertices, mesh.triangles)
+        if not report.ok:
+            fail("the completed surface fails the checks of juncture check, so no mesh was "
+                 "written: " + "; ".join(report.failures()))
         bar.step("write " + " ".join(args.format))
         out = output_dir(args.output)
         written = [write_mesh(mesh, out / f"mesh.{ext}", ascii=args.ascii).name
                    for ext in args.format]
     if not getattr(args, "quiet", False):
         print("\n".join(summary.lines()))
+        print(f"checked: {report.intersecting_pairs} intersecting triangle pairs (exact "
+              f"predicates), Euler characteristic {', '.join(map(str, report.euler))}")
         print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
     return 0

@@ -246,9 +246,10 @@ def build_parser(version):
                    help="deck/model only: density > 0 of every component (default 1: mass = "
                    "volume)")
 
-    from . import _mesh, _sweep
+    from . import _check, _mesh, _sweep
 
     _mesh.add_parser(sub, common)
+    _check.add_parser(sub, common)
     _sweep.add_parser(sub, common)
 
     s = sub.add_parser("demo", parents=[common],

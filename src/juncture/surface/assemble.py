@@ -342,10 +342,10 @@ def mesh(geometry, mirror=True, cap=True, check=True):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`assemble` (both halves unless ``mirror=False``, planar
-    open loops capped unless ``cap=False``), then, with ``check``, the topological checks of
-    :func:`juncture.surface.quality.summarize`: a surface with an open or non-manifold edge,
-    an inconsistently oriented edge or an open loop is refused with a
-    :class:`~juncture.errors.GeometryError` that says what is open.
+    open loops capped unless ``cap=False``), then, with ``check``, every check of
+    :func:`juncture.surface.check.check_mesh` (closed, manifold, oriented, positive volume,
+    no self-intersection under exact predicates): a surface that fails one is refused with a
+    :class:`~juncture.errors.GeometryError` that says what fails, in one line.
 
     Returns
     -------
@@ -354,12 +354,15 @@ def mesh(geometry, mirror=True, cap=True, check=True):
         ``wetted_area()``.
     """
     from ..errors import GeometryError
-    from .quality import summarize
+    from .check import check_mesh
 
     surface = assemble(geometry, mirror=mirror, cap=cap)
     if check:
-        summary = summarize(surface)
-        if not summary.closed or summary.open_loops:
-            fails = [line[6:] for line in summary.lines() if line.startswith("FAIL")]
-            raise GeometryError("the completed surface is not closed: " + "; ".join(fails))
+        failures = check_mesh(surface.vertices, surface.triangles).failures()
+        if surface.open_loops:
+            failures.insert(0, f"{len(surface.open_loops)} open boundary loops (seams whose "
+                               "two sides do not carry the same points)")
+        if failures:
+            raise GeometryError("the completed surface is not closed and valid: "
+                                + "; ".join(failures))
     return surface
