@@ -65,3 +65,30 @@ def test_an_unknown_extension_is_refused_and_nothing_written(tmp_path):
     with pytest.raises(JunctureError, match=r"\.stl, \.msh, \.vtu"):
         write_mesh(_two_pods(), tmp_path / "m.ply")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_cart3d_tri_and_its_config(tmp_path):
+    import xml.etree.ElementTree as ET
+
+    import juncture as jc
+    from tests.support import PDAS_DECK
+
+    geo = jc.complete(jc.read(PDAS_DECK), "cubic")
+    surface = jc.mesh(geo)
+    path = write_mesh(surface, tmp_path / "mesh.tri")
+    words = path.read_text().split()
+    nv, nt = int(words[0]), int(words[1])
+    assert (nv, nt) == (len(surface.vertices), len(surface.triangles))
+    numbers = words[2:]
+    v = np.array(numbers[:3 * nv], float).reshape(nv, 3)
+    t = np.array(numbers[3 * nv:3 * nv + 3 * nt], int).reshape(nt, 3) - 1
+    comp = np.array(numbers[3 * nv + 3 * nt:], int) - 1
+    np.testing.assert_array_equal(v, surface.vertices)  # double precision, exactly
+    np.testing.assert_array_equal(t, surface.triangles)
+    np.testing.assert_array_equal(comp, surface.component)
+    root = ET.parse(tmp_path / "Config.xml").getroot()
+    assert root.tag == "Configuration" and root.get("Source") == "mesh.tri"
+    tris = [c for c in root if c.get("Type") == "tri"]
+    assert [c.get("Name") for c in tris] == list(surface.components)
+    assert [c.find("Data").text for c in tris] == [f"Face Label={k + 1}"
+                                                  for k in range(len(tris))]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 __all__ = ["add_parser", "run"]
 
-_FORMATS = ("stl", "msh", "vtu")
+_FORMATS = ("stl", "msh", "vtu", "tri")
 
 
 def add_parser(sub, common):

@@ -8,6 +8,11 @@
   name, as SU2 markers and Gmsh read them), the elementary entity = the surface (network or
   cap). Version 2.2 because it tags every element with both; meshio's 4.1 writer puts every
   node and element in one entity and loses the physical groups.
+- **Cart3D** ``.tri`` (ASCII): the vertex and triangle counts, the vertices in double
+  precision (17 significant digits: the float64 values exactly), the triangles' 1-based
+  vertex ids, then each triangle's 1-based component id; beside it ``Config.xml`` names the
+  components (``<Component Name="wing" Type="tri"><Data>Face Label=1</Data>``, inside a
+  container ``all``), as Cart3D and its tools read it.
 - **VTU** through meshio: cell data ``component`` and ``surface`` (indices into the mesh's
   ``components`` and ``surfaces``), field data naming them is not part of VTU: the names are in
   the order of :attr:`SurfaceMesh.components`.
@@ -27,7 +32,7 @@ from ..io._registry import atomic_output, atomic_path
 __all__ = ["write_mesh", "MESH_FORMATS"]
 
 #: Extensions :func:`write_mesh` knows.
-MESH_FORMATS = (".stl", ".msh", ".vtu")
+MESH_FORMATS = (".stl", ".msh", ".vtu", ".tri")
 
 _STL_RECORD = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])
 
@@ -84,7 +89,9 @@ def _meshio_mesh(mesh, gmsh):
 
 
 def write_mesh(mesh, path, *, ascii=False):
-    """Write ``mesh`` to ``path`` by extension (.stl, .msh, .vtu); returns the path.
+    """Write ``mesh`` to ``path`` by extension (.stl, .msh, .vtu, .tri); returns the path.
+
+    A ``.tri`` file gets its ``Config.xml`` beside it (in the same directory).
 
     Raises
     ------
@@ -97,6 +104,8 @@ def write_mesh(mesh, path, *, ascii=False):
         (_stl_ascii if ascii else _stl_binary)(mesh, path)
     elif ext in (".msh", ".vtu"):
         _write_by_meshio(mesh, path, "gmsh22" if ext == ".msh" else "vtu")
+    elif ext == ".tri":
+        _cart3d(mesh, path)
     else:
         raise JunctureError(f"cannot write a mesh to {str(path)!r}: the extension must be one "
                             f"of {', '.join(MESH_FORMATS)}")
@@ -109,3 +118,23 @@ def _write_by_meshio(mesh, path, fmt):
     m = _meshio_mesh(mesh, fmt == "gmsh22")
     with atomic_path(path, suffix=path.suffix) as tmp:
         meshio.write(tmp, m, file_format=fmt, **({"binary": False} if fmt == "gmsh22" else {}))
+
+
+def _cart3d(mesh, path):
+    from xml.sax.saxutils import quoteattr
+
+    with atomic_output(path) as fh:
+        fh.write(f"{len(mesh.vertices)} {len(mesh.triangles)}\n")
+        np.savetxt(fh, mesh.vertices, fmt="%.17g")
+        np.savetxt(fh, mesh.triangles + 1, fmt="%d")
+        np.savetxt(fh, mesh.component + 1, fmt="%d")
+    parts = "".join(f"  <Component Name={quoteattr(name)} Type=\"tri\">\n"
+                    f"    <Data>Face Label={k + 1}</Data>\n  </Component>\n"
+                    for k, name in enumerate(mesh.components))
+    names = ",".join(mesh.components)
+    xml = ('<?xml version="1.0" encoding="ISO-8859-1"?>\n'
+           f"<Configuration Name=\"juncture\" Source={quoteattr(path.name)}>\n{parts}"
+           f"  <Component Name=\"all\" Type=\"container\">\n    <Data>{names}</Data>\n"
+           "  </Component>\n</Configuration>\n")
+    with atomic_output(path.with_name("Config.xml")) as fh:
+        fh.write(xml)
