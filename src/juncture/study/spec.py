@@ -184,12 +184,7 @@ def load_spec(path):
 
 def parse_spec(data, root=".", text="", where="sweep spec"):
     """Check a spec given as a dict (the TOML's content); ``root`` resolves ``base``."""
-    if not isinstance(data, dict):
-        raise SpecError(f"{where}: expected a table of settings, found {type(data).__name__}")
-    unknown = sorted(set(data) - _TOP)
-    if unknown:
-        raise SpecError(f"{where}: unknown key {unknown[0]!r}; a sweep spec has "
-                        f"{', '.join(sorted(_TOP))}")
+    _table_of(data, _TOP, where, "a sweep spec")
     base = _base(data, Path(root), where)
     complete = _complete_options(_table(data, "complete", where), where)
     analysis = _analysis(_table(data, "analysis", where), where)
@@ -203,6 +198,16 @@ def parse_spec(data, root=".", text="", where="sweep spec"):
     return SweepSpec(base=base, base_bytes=base.read_bytes(), title=title, complete=complete,
                      analysis=analysis, parameters=params, method=method, n=n, seed=seed,
                      text=text)
+
+
+def _table_of(data, allowed, what, noun):
+    """SpecError unless ``data`` is a table whose keys are all ``allowed``."""
+    if not isinstance(data, dict):
+        raise SpecError(f"{what}: expected a table, found {data!r}")
+    unknown = sorted(set(data) - set(allowed))
+    if unknown:
+        raise SpecError(f"{what}: unknown key {unknown[0]!r}; {noun} has "
+                        f"{', '.join(sorted(allowed))}")
 
 
 def _table(data, key, where):
@@ -307,12 +312,7 @@ def _sampling(table, where):
 
 def _parameter(name, body, method, where):
     what = f"{where}: [parameters.{name}]"
-    if not isinstance(body, dict):
-        raise SpecError(f"{what}: expected a table, found {body!r}")
-    unknown = sorted(set(body) - _PARAM_KEYS)
-    if unknown:
-        raise SpecError(f"{what}: unknown key {unknown[0]!r}; a parameter has "
-                        f"{', '.join(sorted(_PARAM_KEYS))}")
+    _table_of(body, _PARAM_KEYS, what, "a parameter")
     kinds = [k for k in ("component", "option", "analysis") if k in body]
     if len(kinds) != 1:
         raise SpecError(f"{what}: give exactly one of component (with field), option or "
