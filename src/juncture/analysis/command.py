@@ -105,7 +105,7 @@ def _fillet_mach(geo, x_cuts, thetas, mach):
 
 
 def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None,
-             method="juncture", conventions=None):
+             method="juncture", conventions=None, networks=None):
     """Area distribution and supersonic wave drag of a configuration (both halves).
 
     Parameters
@@ -141,6 +141,10 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None,
         turn with Boole's rule.
     conventions : HarrisConventions, optional
         With ``method="harris"``: which conventions apply (default: all).
+    networks : mapping of str to (n_lines, n_points, 3) float, optional
+        With a Mach number and a Configuration (or a completed geometry's model): its closed
+        networks (:func:`juncture.analysis.closed.closed_networks`) made once for several
+        Mach numbers, instead of building them again for each.
 
     Returns
     -------
@@ -213,7 +217,7 @@ def wavedrag(cfg, mach=None, n_x=101, n_theta=16, geometry=None, half_turn=None,
     else:
         half = (model and is_y_symmetric(source)) if half_turn is None else bool(half_turn)
         out.update(_far_field(source, mach, n_x, n_theta, half,
-                              geometry=geometry if fillets else None))
+                              geometry=geometry if fillets else None, networks=networks))
     out["CD"] = None if ref is None else out["D_over_q"] / ref
     return out
 

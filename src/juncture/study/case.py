@@ -148,13 +148,15 @@ def wetted_area(geo):
 
 
 def _drag_and_volume(geo, analysis):
-    from ..analysis import wavedrag
+    from ..analysis import closed_networks, wavedrag
     from ..analysis._components import held_base_area
 
     out, x, area = {}, None, None
     model = geo.configuration
+    nets = closed_networks(model) if analysis["mach"] else None  # once for every Mach
     for mach in analysis["mach"]:
-        r = wavedrag(model, mach, analysis["n_x"], analysis["n_theta"], geometry=geo)
+        r = wavedrag(model, mach, analysis["n_x"], analysis["n_theta"], geometry=geo,
+                     networks=nets if mach > 1.0 else None)  # M 1: the exact normal areas
         dq, cd = drag_columns(mach)
         out[dq] = r["D_over_q"]
         out[cd] = np.nan if r["CD"] is None else r["CD"]
