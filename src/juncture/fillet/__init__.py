@@ -11,7 +11,8 @@ from .area import (
     wedge_area,
 )
 from .circular import circular_fillet
-from .cubic import FilletLines, bezier, blend_factor, cubic_fillet, hermite
+from .cubic import cubic_fillet
+from .lines import FilletLines, bezier, blend_factor, hermite
 
 __all__ = ["FilletLines", "cubic_fillet", "circular_fillet", "fillet_added_area", "keep_area",
            "BodyReduction", "reduced_body", "polygon_disk_area", "Compensation", "blend_factor",

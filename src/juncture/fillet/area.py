@@ -115,7 +115,7 @@ def _cubic_rows(lines):
     m, k = lines.points.shape[:2]
     if ctrl is None or k < 2:
         return np.zeros(m, bool), None
-    from .cubic import bezier
+    from .lines import bezier
 
     ctrl = np.asarray(ctrl, float)
     pts = bezier(np.nan_to_num(ctrl), np.linspace(0.0, 1.0, k))

@@ -30,7 +30,7 @@ from ..errors import GeometryError
 from ..intersect import BodyIntersection, find_crossings
 from ..intersect.rays import SurfaceBound
 from ..misses import ended_lines, line_ends
-from .cubic import FilletLines, blend_over
+from .lines import FilletLines, blend_over
 
 __all__ = ["circular_fillet", "arcs"]
 

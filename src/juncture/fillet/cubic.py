@@ -82,13 +82,14 @@ its lower surface.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, polyline_points
+from .endpoint import _end_coordinate, _line_direction, _segment
+from .lines import FilletLines, bezier, blend_factor, blend_over, hermite
 
 __all__ = ["FilletLines", "cubic_fillet", "EndMode", "Blending", "MissedLines", "hermite",
            "bezier", "blend_factor", "blend_over", "tangent_intersection_distance"]
@@ -103,72 +104,6 @@ THETA_U_DEFAULT = float(np.radians(20.0))
 K_SHARE = 0.5
 #: Below this share dy / |E - B|, kappa is measured along a direction turned to the chord.
 _Y_SHARE = 0.5
-
-
-@dataclass(frozen=True, slots=True, eq=False)
-class FilletLines:
-    """Fillet lines of one wing surface.
-
-    Attributes
-    ----------
-    side : {"upper", "lower"}
-    points : (n_stations, n_points, 3) float
-        Each line from its start on the body (index 0) to its end on the wing (index -1).
-    start, end : (n_stations, 3) float
-        B (on the body circle) and E (on the lofting line).
-    theta_start : (n_stations,) float
-        Body angle of B [rad] (TM-4406 convention).
-    u_end : (n_stations,) float
-        Section coordinate of E on its lofting line.
-    blend : (n_stations,) float
-        beta(L) of each line (0 at the leading / trailing edge, 1 in the blended-in region).
-    dips : (n_stations,) bool
-        Upper (lower) fillet dips below (rises above) the wing's tangent plane at its end:
-        the low-wing problem of TM-4406, which :func:`cubic_fillet` no longer has (only
-        ``missed_lines="paper"`` lines can show it).
-    kind : str
-        ``"cubic"``, ``"parabolas"`` or ``"circular"``.
-    log : tuple of str
-    blend_range : tuple of float or None
-        (x_le, x_te, l_b) the blending used [deck length]: pass it back as ``blend_range``
-        to blend another body's fillet over the same region.
-    control : (n_stations, 4, 3) float or None
-        Bezier control points of each line when it is a cubic in s (the points are the
-        cubic at equally spaced s); a row of NaN where a line is not (the z-constraint).
-        Used for the exact added area (:func:`juncture.fillet.fillet_added_area`).
-    """
-
-    side: str
-    points: np.ndarray
-    start: np.ndarray
-    end: np.ndarray
-    theta_start: np.ndarray
-    u_end: np.ndarray
-    blend: np.ndarray
-    dips: np.ndarray
-    kind: str = "cubic"
-    log: tuple = ()
-    blend_range: tuple = None
-    control: np.ndarray = None
-
-
-def hermite(p0, p1, t0, t1, s):
-    """Cubic Hermite curves, vectorised: (m, 3) ends and tangents, s (k,) -> (m, k, 3)."""
-    s = np.asarray(s, float)[None, :, None]
-    h00 = 2 * s ** 3 - 3 * s ** 2 + 1
-    h10 = s ** 3 - 2 * s ** 2 + s
-    h01 = -2 * s ** 3 + 3 * s ** 2
-    h11 = s ** 3 - s ** 2
-    return (h00 * p0[:, None] + h10 * t0[:, None] + h01 * p1[:, None] + h11 * t1[:, None])
-
-
-def bezier(control, s):
-    """Cubic Bezier curves, vectorised: control (m, 4, d), s (k,) -> (m, k, d)."""
-    s = np.asarray(s, float)[None, :, None]
-    c = np.asarray(control, float)
-    w = 1.0 - s
-    return (w ** 3 * c[:, None, 0] + 3 * w * w * s * c[:, None, 1]
-            + 3 * w * s * s * c[:, None, 2] + s ** 3 * c[:, None, 3])
 
 
 def tangent_intersection_distance(radius, phi, phi_max):
@@ -326,136 +261,6 @@ def _leg_share(along, rate, leg):
     with np.errstate(divide="ignore", invalid="ignore"):
         share = along / (3.0 * rate * leg)
     return np.where((rate > 0) & (leg > 0), share, np.inf)
-
-
-def _line_direction(lines, u, k, found, last=None):
-    """(m, 3) unit direction of each lofting line where it reaches u from inboard (the
-    segment ending at u where u is a section, to rounding), between segments k and last."""
-    n = lines.shape[1]
-    rows = np.arange(lines.shape[0])
-    seg = np.clip(np.ceil(np.nan_to_num(u) - 1e-9) - 1, 0, n - 2).astype(int)
-    seg = np.maximum(seg, k) if last is None else np.clip(seg, k, np.maximum(last, k))
-    seg = np.where(found, seg, k)
-    d = lines[rows, seg + 1] - lines[rows, seg]
-    return d / np.linalg.norm(d, axis=1)[:, None]
-
-
-def _segment(u, n_sections):
-    """Index of the lofting-line segment holding section coordinate u (extended at the ends)."""
-    u = np.nan_to_num(np.asarray(u, float))
-    return np.clip(np.floor(u), 0, n_sections - 2).astype(int)
-
-
-#: Just outboard of a bend of the lofting line, at a distance a past it, the end point lies
-#: at most BEND_MARGIN * a from I (the fillet grows from nothing as I leaves the bend).
-BEND_MARGIN = 4.0
-
-
-def _arc(lines):
-    """(m, n) arc length of each lofting line at its sections, and (m, n - 1) piece lengths."""
-    piece = np.linalg.norm(np.diff(lines, axis=1), axis=2)
-    return np.concatenate([np.zeros((len(lines), 1)), np.cumsum(piece, axis=1)], axis=1), piece
-
-
-def _length_at(arc, piece, u):
-    """Arc length along each line at section coordinate u (m,), clamped to the line."""
-    n = arc.shape[1]
-    u = np.clip(np.nan_to_num(u), 0.0, n - 1.0)
-    j = np.minimum(np.floor(u).astype(int), n - 2)
-    rows = np.arange(len(u))
-    return arc[rows, j] + (u - j) * piece[rows, j]
-
-
-def _u_at(arc, piece, s):
-    """Section coordinate at arc length s (m,) along each line (inverse of _length_at)."""
-    n = arc.shape[1]
-    j = np.clip((arc[:, 1:-1] <= s[:, None]).sum(axis=1), 0, n - 2)
-    rows = np.arange(len(s))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = (s - arc[rows, j]) / piece[rows, j]
-    return j + np.clip(np.nan_to_num(t), 0.0, 1.0)
-
-
-def _end_coordinate(wing, inter, end, end_value, k, side, lines):
-    """Section coordinate of E per line (module docstring), and the lines where it is held.
-
-    ``end="dy"`` is a span increment from I, across sections if it reaches past one. E
-    is held where the lofting line first bends outboard of I (sections it runs straight
-    through do not count; the tip at most), so that the wing between I and E is straight
-    and the curve cannot cut a corner of it. Just outboard of a bend, E lies at most
-    ``BEND_MARGIN`` times I's distance from the bend away from I: the fillet shrinks to
-    nothing as I approaches a bend from either side, so it changes continuously when the
-    intersection moves across a section (as it does while the fixed-area iteration shrinks
-    the body).
-    """
-    u_i = inter.u
-    st = wing.span_stations
-    n = lines.shape[1]
-    if end == "section":
-        u_e = k + float(end_value)
-    elif end == "intersection":
-        u_e = u_i + float(end_value) * ((k + 1.0) - u_i)
-    elif end == "dy":
-        span_i = np.interp(np.nan_to_num(u_i), np.arange(n), st)
-        u_e = np.interp(span_i + float(end_value), st, np.arange(n), right=n - 1.0)
-        u_e = np.where(span_i + float(end_value) > st[-1], n - 1.0, u_e)
-    else:
-        raise GeometryError(f"fillet end must be 'section', 'intersection' or 'dy', found "
-                            f"{end!r}", wing.name)
-    found = np.asarray(inter.found, bool)
-    bad = ~(u_e > u_i) & found
-    if np.any(bad):
-        j = int(np.argmax(bad))
-        raise GeometryError(f"{side} fillet line {j + 1}: the fillet end point (u = "
-                            f"{u_e[j]:.4g}) is not outboard of the intersection (u = "
-                            f"{u_i[j]:.4g}) on its lofting line; choose a larger end value or "
-                            "end='dy'", wing.name, j + 1)
-    d = np.diff(lines, axis=1)
-    d = d / np.linalg.norm(d, axis=2)[..., None]
-    kink = np.zeros(lines.shape[:2], bool)
-    kink[:, 1:-1] = 1.0 - (d[:, :-1] * d[:, 1:]).sum(-1) > 1e-12
-    sections = np.arange(n)
-    u_next = np.where((kink | (sections == n - 1)) & (sections[None, :] >= k[:, None] + 1),
-                      sections[None, :], n - 1).min(axis=1).astype(float)
-    u_prev = np.where(kink & (sections[None, :] <= np.floor(np.nan_to_num(u_i))[:, None]),
-                      sections[None, :], -1).max(axis=1).astype(float)
-    arc, piece = _arc(lines)
-    s_i = _length_at(arc, piece, u_i)
-    want = _length_at(arc, piece, np.minimum(u_e, n - 1.0)) - s_i
-    allowed = _length_at(arc, piece, u_next) - s_i
-    past = s_i - _length_at(arc, piece, u_prev)
-    allowed = np.where(u_prev >= 0, np.minimum(allowed, BEND_MARGIN * past), allowed)
-    held = found & (allowed < want)
-    u_held = _u_at(arc, piece, s_i + np.maximum(allowed, 0.0))
-    return np.where(held, u_held, np.minimum(u_e, n - 1.0)), held
-
-
-def blend_over(x_i, blend_length=None, blend_range=None):
-    """beta(L) per lofting line and the (x_le, x_te, l_b) it used (eqs 8-9).
-
-    By default the edges are the first and last intersection points (leading and trailing
-    edge lines) and l_b a tenth of the distance between them. A given ``blend_range`` fixes
-    them instead (the fixed-area iteration blends every re-designed body's fillet over the
-    original body's region, so that no fillet depends on where the edge lines happen to
-    meet the body); the edge lines themselves still get beta = 0.
-    """
-    if blend_range is None:
-        x_le, x_te = float(x_i[0]), float(x_i[-1])
-        if blend_length is None:
-            blend_length = 0.1 * (np.max(x_i) - np.min(x_i))
-        blend_range = (x_le, x_te, blend_length)
-    beta = blend_factor(x_i, *blend_range)
-    if blend_range[2] is not None and blend_range[2] > 0:
-        beta[[0, -1]] = 0.0
-    return beta, blend_range
-
-
-def blend_factor(x, x_le, x_te, blend_length):
-    """beta(L) = sin(pi L / 2) with L the distance from the nearer edge over l_b (eqs 8-9)."""
-    if blend_length is None or blend_length <= 0:
-        return np.ones_like(x)
-    L = np.clip(np.minimum(x - x_le, x_te - x) / blend_length, 0.0, 1.0)
-    return np.sin(0.5 * np.pi * L)
 
 
 def _cross(a, b):
