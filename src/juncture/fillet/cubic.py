@@ -336,6 +336,43 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     """
     side = inter.side
     sign = 1.0 if side == "upper" else -1.0
+    _check_options(wing, blending, remedy, missed_lines)
+    lines = wing.lofting_lines(side)
+    m = lines.shape[0]
+    found = np.asarray(inter.found, bool)
+    log = []
+    st = _line_starts(wing, body, inter, lines, end, end_value, missed_lines,
+                      upper_reference, sign, log)
+    I, theta_i, u_full, k = st["I"], st["theta_i"], st["u_full"], st["k"]
+    paper_miss, plane_miss = st["paper_miss"], st["plane_miss"]
+    x_i = I[:, 0]
+    beta, blend_range = blend_over(x_i, blend_length, blend_range)
+    beta = np.where(paper_miss, 1.0, np.where(plane_miss, 0.0, beta))
+    scale = beta if blending == "scale" else np.ones(m)
+    scale = np.where(plane_miss, 0.0, scale)
+    theta_u = np.broadcast_to(np.asarray(theta_u, float), (m,))
+    phi, k_full = _start_angles(wing, body, side, sign, lines, I, theta_i, u_full, k, found,
+                                scale, theta_u, log)
+    u_e = st["u_i"] + scale * (u_full - st["u_i"])
+    E = polyline_points(lines, u_e[:, None])[:, 0]
+    live = scale > 0
+    # The end tangent and the wing's plane where the (blended) end point lies.
+    t_e = _line_direction(lines, u_e, k, found, k_full)
+    n_e = _wing_normal(wing, side, E, t_e, sign, I)
+    if paper_miss.any():
+        _check_paper_starts(body, side, wing, E, x_i, theta_i, paper_miss)
+    con = _Construction(body, E, t_e, n_e, x_i, theta_i, sign, scale, paper_miss, live, remedy)
+    phi = _safety_net(con, wing, side, body, I, found & live & ~paper_miss, phi, log)
+    geo = con.geometry(phi)
+    B, theta_b, T0, T1, control, reach = con.finish(geo)
+    if reach.any():
+        control, T0, T1 = _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1)
+    return _assembled(wing, body, side, sign, n_points, remedy, blending, I, B, E, T0, T1,
+                      control, theta_b, u_e, beta, n_e, live, plane_miss, st["ends"],
+                      blend_range, log)
+
+
+def _check_options(wing, blending, remedy, missed_lines):
     if blending not in ("scale", "points"):
         raise GeometryError(f"fillet blending must be 'scale' or 'points', found {blending!r}",
                             wing.name)
@@ -345,16 +382,18 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     if missed_lines not in ("plane", "paper"):
         raise GeometryError(f"missed_lines must be 'plane' or 'paper', found {missed_lines!r}",
                             wing.name)
-    lines = wing.lofting_lines(side)
-    m, n_sec = lines.shape[:2]
-    found = np.asarray(inter.found, bool)
-    missed = ~found
+
+
+def _line_starts(wing, body, inter, lines, end, end_value, missed_lines, upper_reference,
+                 sign, log):
+    """I, theta_I and the section coordinates of I and of the requested E per line, with
+    the lines that miss the body handled as ``missed_lines`` says (appends to ``log``)."""
+    side = inter.side
+    n_sec = lines.shape[1]
+    missed = ~np.asarray(inter.found, bool)
     k = _segment(inter.u, n_sec)
     u_full, held = _end_coordinate(wing, inter, end, end_value, k, side, lines)
-    I = inter.points.copy()
-    theta_i = inter.theta.copy()
-    u_i = inter.u.copy()
-    log = []
+    I, theta_i, u_i = inter.points.copy(), inter.theta.copy(), inter.u.copy()
     paper_miss = missed & (missed_lines == "paper")
     plane_miss = missed & (missed_lines == "plane")
     ends = None
@@ -385,13 +424,15 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(held))}: end point "
                    "held at the next section where the lofting line bends (the fillet ends on "
                    "the straight part of the line that holds the intersection)")
-    x_i = I[:, 0]
-    beta, blend_range = blend_over(x_i, blend_length, blend_range)
-    beta = np.where(paper_miss, 1.0, np.where(plane_miss, 0.0, beta))
-    scale = beta if blending == "scale" else np.ones(m)
-    scale = np.where(plane_miss, 0.0, scale)
-    theta_u = np.broadcast_to(np.asarray(theta_u, float), (m,))
+    return {"I": I, "theta_i": theta_i, "u_i": u_i, "u_full": u_full, "k": k,
+            "paper_miss": paper_miss, "plane_miss": plane_miss, "ends": ends}
 
+
+def _start_angles(wing, body, side, sign, lines, I, theta_i, u_full, k, found, scale,
+                  theta_u, log):
+    """theta_u per line, reduced where the fillet would not fit between the body and the
+    wing's tangent plane (appends to ``log``), and the segment of the requested E."""
+    m, n_sec = lines.shape[:2]
     # The wing's tangent plane along the lofting line (at the requested end point) and its
     # trace in the cross-section plane x = x_I (module docstring).
     E_full = polyline_points(lines, u_full[:, None])[:, 0]
@@ -406,7 +447,7 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     projected = t_full[:, 1:] / np.linalg.norm(t_full[:, 1:], axis=1)[:, None]
     phi_max = np.minimum(_wedge_angle(trace, theta_i, sign),
                          _wedge_angle(projected, theta_i, sign))
-    r_i = body.radius_at(x_i)
+    r_i = body.radius_at(I[:, 0])
     mu_full = np.linalg.norm(E_full[:, 1:] - I[:, 1:], axis=1)
     phi_fit = _fit_angle(r_i, K_SHARE * mu_full, phi_max)
     phi = np.where(found, np.minimum(theta_u, phi_fit), theta_u)
@@ -422,31 +463,40 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(tight))}: the wing "
                    f"is nearly tangent to {body.name} (less than 1 deg between them): no room "
                    "for a fillet there, the line is left nearly sharp")
+    return phi, k_full
 
-    u_e = u_i + scale * (u_full - u_i)
-    E = polyline_points(lines, u_e[:, None])[:, 0]
-    live = scale > 0
-    # The end tangent and the wing's plane where the (blended) end point lies.
-    t_e = _line_direction(lines, u_e, k, found, k_full)
-    n_e = _wing_normal(wing, side, E, t_e, sign, I)
-    # ... and the plane through the lofting line along x (its trace in x = const is the
-    # projected line: keeping to it keeps each fillet's cross-section polygon simple).
-    n_e2 = np.stack([np.zeros(m), -t_e[:, 2], t_e[:, 1]], axis=1) * sign
-    n_e2 /= np.linalg.norm(n_e2, axis=1)[:, None]
-    if paper_miss.any():
-        dy = E[:, 1] - body.point(x_i, theta_i)[:, 1]
-        bad = paper_miss & (dy <= 0)
-        if bad.any():
-            j = int(np.argmax(bad))
-            raise GeometryError(f"{side} fillet line {j + 1}: the end point is not outboard of "
-                                "the start point at the body's bottom (TM-4406 special case); "
-                                "use missed_lines='plane' or move the end point out",
-                                wing.name, j + 1)
 
-    def geometry(phi):
+def _check_paper_starts(body, side, wing, E, x_i, theta_i, paper_miss):
+    dy = E[:, 1] - body.point(x_i, theta_i)[:, 1]
+    bad = paper_miss & (dy <= 0)
+    if bad.any():
+        j = int(np.argmax(bad))
+        raise GeometryError(f"{side} fillet line {j + 1}: the end point is not outboard of "
+                            "the start point at the body's bottom (TM-4406 special case); "
+                            "use missed_lines='plane' or move the end point out",
+                            wing.name, j + 1)
+
+
+class _Construction:
+    """The Bezier construction of one surface's fillet lines for given start arcs phi."""
+
+    def __init__(self, body, E, t_e, n_e, x_i, theta_i, sign, scale, paper_miss, live,
+                 remedy):
+        m = len(E)
+        self.body, self.E, self.t_e, self.n_e = body, E, t_e, n_e
+        self.x_i, self.theta_i, self.sign, self.scale = x_i, theta_i, sign, scale
+        self.paper_miss, self.live, self.remedy, self.m = paper_miss, live, remedy, m
+        # The plane through the lofting line along x (its trace in x = const is the
+        # projected line: keeping to it keeps each fillet's cross-section polygon simple).
+        n_e2 = np.stack([np.zeros(m), -t_e[:, 2], t_e[:, 1]], axis=1) * sign
+        self.n_e2 = n_e2 / np.linalg.norm(n_e2, axis=1)[:, None]
+
+    def geometry(self, phi):
         """Start point, tangent, longest legs and the paper's shares for arcs ``phi``."""
-        theta_b = np.where(paper_miss, theta_i, theta_i + sign * scale * phi)
-        B = body.point(x_i, theta_b)
+        m, E, t_e, sign, paper_miss = self.m, self.E, self.t_e, self.sign, self.paper_miss
+        theta_b = np.where(paper_miss, self.theta_i,
+                           self.theta_i + sign * self.scale * phi)
+        B = self.body.point(self.x_i, theta_b)
         # Circle tangent at B pointing towards the wing (theta moving towards theta_i).
         t_b = np.stack([np.zeros(m), np.sin(theta_b), -np.cos(theta_b)], axis=1) * sign
         t_b[paper_miss] = [0.0, 1.0, 0.0]
@@ -454,10 +504,10 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
         # The longest legs that keep the control polygon between the two tangent planes: P1
         # on the body's tangent at B up to the wing's plane, P2 on the lofting line back to
         # the body's tangent plane at B.
-        n_b = _body_normal(body, x_i, theta_b)
+        n_b = _body_normal(self.body, self.x_i, theta_b)
         n_b2 = np.stack([np.zeros(m), np.cos(theta_b), np.sin(theta_b)], axis=1)
-        leg_b = np.minimum(_ray_to_plane(B, t_b, n_e, E, E - B),
-                           _ray_to_plane(B, t_b, n_e2, E, E - B))
+        leg_b = np.minimum(_ray_to_plane(B, t_b, self.n_e, E, E - B),
+                           _ray_to_plane(B, t_b, self.n_e2, E, E - B))
         leg_e = np.minimum(_ray_to_plane(E, -t_e, n_b, B, E - B),
                            _ray_to_plane(E, -t_e, n_b2, B, E - B))
         chord = E[:, 1:] - B[:, 1:]
@@ -472,10 +522,11 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
             (share_b > 0) & (share_e > 0)
         return theta_b, B, t_b, dy, leg_b, leg_e, share_b, share_e, eligible
 
-    def finish(geo, w=0.0):
+    def finish(self, geo, w=0.0):
         """Tangents and control points, and the lines whose paper tangents lie beyond the
-        guarantee (``w``: how far towards them, see below)."""
+        guarantee (``w``: how far towards them, see :func:`_towards_paper`)."""
         theta_b, B, t_b, dy, leg_b, leg_e, share_b, share_e, eligible = geo
+        E, t_e, live, paper_miss = self.E, self.t_e, self.live, self.paper_miss
         top = np.maximum(share_b, share_e)
         # Beyond the guarantee (a share above 1), the paper's tangents are taken as far as
         # the caller found them clear of both surfaces (w), tapering off between 1.25 and 1.5.
@@ -492,68 +543,80 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
             mag_e = np.where(paper_miss, dy / t_e[:, 1], mag_e)
         mag_b = np.where(live, mag_b, 0.0)
         mag_e = np.where(live, mag_e, 0.0)
-        if remedy == "parabolas":
-            mag_b, mag_e = _parabola_lengths(body, B, theta_b, sign, E, t_e, leg_b, leg_e,
-                                             mag_b, mag_e, ~paper_miss & live)
+        if self.remedy == "parabolas":
+            mag_b, mag_e = _parabola_lengths(self.body, B, theta_b, self.sign, E, t_e, leg_b,
+                                             leg_e, mag_b, mag_e, ~paper_miss & live)
         T0, T1 = t_b * mag_b[:, None], t_e * mag_e[:, None]
         control = np.stack([B, B + T0 / 3.0, E - T1 / 3.0, E], axis=1)
         return B, theta_b, T0, T1, control, reach & live & ~paper_miss
 
-    def build(phi, w=0.0):
-        return finish(geometry(phi), w)
 
-    geo = geometry(phi)
-    B, theta_b, T0, T1, control, reach = finish(geo)
-    # The safety net: the construction keeps the control polygon between the tangent planes
-    # of body and wing; where the surfaces curve away from those planes the wrong way over a
-    # long fillet (a twisted wing, far end points), check against the surfaces themselves
-    # and bring B closer to I on the lines that enter either (bisection on phi).
-    check = found & live & ~paper_miss
-    tol = 1e-10 * max(float(body.length), 1.0)
-    samples = 33  # the check's points along each line (independent of n_points)
+#: Points along each line where a fillet is checked against the surfaces.
+_SAMPLES = 33
+
+
+def _tolerance(body):
+    return 1e-10 * max(float(body.length), 1.0)
+
+
+def _safety_net(con, wing, side, body, I, check, phi, log):
+    """phi, reduced (bisection) on the lines whose curve enters the body or the wing.
+
+    The construction keeps the control polygon between the tangent planes of body and wing;
+    where the surfaces curve away from those planes the wrong way over a long fillet (a
+    twisted wing, far end points), the curve is checked against the surfaces themselves and
+    B brought closer to I on the lines that enter either.
+    """
+    tol = _tolerance(body)
 
     def clear(ctrl, rows):
-        """Whether the lines ``rows`` (bool mask) of ``ctrl`` are clear (True elsewhere)."""
-        out = np.ones(m, bool)
+        out = np.ones(con.m, bool)
         if rows.any():
-            out[rows] = _clear(wing, side, body, ctrl[rows], tol, I[rows], samples)
+            out[rows] = _clear(wing, side, body, ctrl[rows], tol, I[rows], _SAMPLES)
         return out
 
-    bad = check & ~clear(control, check)
-    if bad.any():
-        lo, hi = np.zeros(m), np.ones(m)
-        for _ in range(20):
-            mid = 0.5 * (lo + hi)
-            ok = clear(build(np.where(bad, mid * phi, phi))[4], bad)
-            lo, hi = np.where(bad & ok, mid, lo), np.where(bad & ~ok, mid, hi)
-        phi = np.where(bad, lo * phi, phi)
-        geo = geometry(phi)
-        B, theta_b, T0, T1, control, reach = finish(geo)
-        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(bad))}: theta_u "
-                   "reduced further where the curved surfaces leave less room than their "
-                   "tangent planes")
-    # Where the paper's own tangent lengths (s = y) reach a little past the guaranteed legs,
-    # they are kept if the curve they give stays clear of both surfaces (the transport's
-    # numbers stay the paper's), else taken as far towards them as it does (bisection).
-    if reach.any():
-        # The control points are linear in w (between the guaranteed lengths, w = 0, and the
-        # paper's, w = 1): all candidates w = k / 8 of all such lines in one check.
-        full = finish(geo, 1.0)
-        c0, c1 = control, full[4]
-        grid = np.arange(1, 9) / 8.0
-        rows = np.flatnonzero(reach)
-        cand = c0[rows, None] + grid[None, :, None, None] * (c1 - c0)[rows, None]
-        ok = _clear(wing, side, body, cand.reshape(-1, 4, 3), tol,
-                    np.repeat(I[rows], grid.size, axis=0), samples).reshape(rows.size, -1)
-        # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
-        upto = np.cumprod(ok, axis=1).sum(axis=1)
-        part, whole = rows[(upto > 0) & (upto < grid.size)], rows[upto == grid.size]
-        control, T0, T1 = control.copy(), T0.copy(), T1.copy()
-        control[part] = cand[np.flatnonzero((upto > 0) & (upto < grid.size)),
-                             upto[(upto > 0) & (upto < grid.size)] - 1]
-        T0[part] = 3.0 * (control[part, 1] - control[part, 0])
-        T1[part] = 3.0 * (control[part, 3] - control[part, 2])
-        control[whole], T0[whole], T1[whole] = c1[whole], full[2][whole], full[3][whole]
+    bad = check & ~clear(con.finish(con.geometry(phi))[4], check)
+    if not bad.any():
+        return phi
+    lo, hi = np.zeros(con.m), np.ones(con.m)
+    for _ in range(20):
+        mid = 0.5 * (lo + hi)
+        ok = clear(con.finish(con.geometry(np.where(bad, mid * phi, phi)))[4], bad)
+        lo, hi = np.where(bad & ok, mid, lo), np.where(bad & ~ok, mid, hi)
+    log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(bad))}: theta_u "
+               "reduced further where the curved surfaces leave less room than their "
+               "tangent planes")
+    return np.where(bad, lo * phi, phi)
+
+
+def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1):
+    """Where the paper's own tangent lengths (s = y) reach a little past the guaranteed
+    legs, they are kept if the curve they give stays clear of both surfaces (the transport's
+    numbers stay the paper's), else taken as far towards them as it does: the control points
+    are linear in w (the guaranteed lengths at w = 0, the paper's at 1), so all candidates
+    w = k / 8 of all such lines are checked at once."""
+    full = con.finish(geo, 1.0)
+    c0, c1 = control, full[4]
+    grid = np.arange(1, 9) / 8.0
+    rows = np.flatnonzero(reach)
+    cand = c0[rows, None] + grid[None, :, None, None] * (c1 - c0)[rows, None]
+    ok = _clear(wing, side, body, cand.reshape(-1, 4, 3), _tolerance(body),
+                np.repeat(I[rows], grid.size, axis=0), _SAMPLES).reshape(rows.size, -1)
+    # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
+    upto = np.cumprod(ok, axis=1).sum(axis=1)
+    some = (upto > 0) & (upto < grid.size)
+    part, whole = rows[some], rows[upto == grid.size]
+    control, T0, T1 = control.copy(), T0.copy(), T1.copy()
+    control[part] = cand[np.flatnonzero(some), upto[some] - 1]
+    T0[part] = 3.0 * (control[part, 1] - control[part, 0])
+    T1[part] = 3.0 * (control[part, 3] - control[part, 2])
+    control[whole], T0[whole], T1[whole] = c1[whole], full[2][whole], full[3][whole]
+    return control, T0, T1
+
+
+def _assembled(wing, body, side, sign, n_points, remedy, blending, I, B, E, T0, T1, control,
+               theta_b, u_e, beta, n_e, live, plane_miss, ends, blend_range, log):
+    """The FilletLines: the cubics sampled, remedies and edge blending applied."""
     s = np.linspace(0.0, 1.0, int(n_points))
     kind = "parabolas" if remedy == "parabolas" else "cubic"
     f = hermite(B, E, T0, T1, s)
