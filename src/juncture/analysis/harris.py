@@ -76,14 +76,12 @@ def harris_model(cfg, conventions):
     """``cfg`` with straight lines between chordwise ordinates, if the conventions say so."""
     if not conventions.linear_chordwise:
         return cfg
-    from ..model import WingLike
+    from ..model import WingLike, rebuilt
 
     comps = dict(cfg.components)
     for name, comp in comps.items():
         if isinstance(comp, WingLike) and comp.chordwise != "linear":
-            public = {f: getattr(comp, f) for f in comp.__dataclass_fields__
-                      if not f.startswith("_")}
-            comps[name] = WingLike(**{**public, "chordwise": "linear"})
+            comps[name] = rebuilt(comp, chordwise="linear")
     return cfg.replace(components=comps)
 
 

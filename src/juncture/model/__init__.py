@@ -2,8 +2,8 @@
 
 from .airfoil import Airfoil, interpolate_chordwise, surface_offsets
 from .body import ArbitraryBody, CircularBody
-from .configuration import Component, Configuration
+from .configuration import Component, Configuration, rebuilt
 from .winglike import WingLike
 
 __all__ = ["Airfoil", "WingLike", "CircularBody", "ArbitraryBody", "Configuration", "Component",
-           "surface_offsets", "interpolate_chordwise"]
+           "rebuilt", "surface_offsets", "interpolate_chordwise"]

@@ -11,9 +11,18 @@ from ..errors import GeometryError
 from .body import ArbitraryBody, CircularBody
 from .winglike import WingLike
 
-__all__ = ["Configuration", "Component"]
+__all__ = ["Configuration", "Component", "rebuilt"]
 
 Component = WingLike | CircularBody | ArbitraryBody
+
+
+def rebuilt(component, **changes):
+    """A new component of the same type with some public fields changed (its caches and
+    checks rebuilt from them)."""
+    fields = {f: getattr(component, f) for f in component.__dataclass_fields__
+              if not f.startswith("_")}
+    fields.update(changes)
+    return type(component)(**fields)
 
 
 @dataclass(frozen=True, slots=True, eq=False)

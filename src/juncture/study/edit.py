@@ -42,6 +42,7 @@ import numpy as np
 
 from ..errors import GeometryError, SpecError
 from ..model import CircularBody, WingLike
+from ..model import rebuilt as _rebuilt
 
 __all__ = ["apply_edit", "check_edit", "check_target", "FIELDS"]
 
@@ -105,13 +106,6 @@ def apply_edit(cfg, param, value):
         comp = cfg[name]
         cfg = cfg.with_component(_EDITS[_type_of(comp)](comp, param, float(value)))
     return cfg
-
-
-def _rebuilt(comp, **changes):
-    """A new component of the same type with some public fields changed (caches rebuilt)."""
-    fields = {f: getattr(comp, f) for f in comp.__dataclass_fields__ if not f.startswith("_")}
-    fields.update(changes)
-    return type(comp)(**fields)
 
 
 def _rows(comp, index, count, what):
