@@ -13,7 +13,7 @@ from juncture.analysis import wavedrag
 from juncture.analysis.harris import HarrisConventions, buried_roots
 from juncture.analysis.wavedrag import roll_angles, sears_haack_drag
 from juncture.errors import JunctureError, JunctureWarning
-from juncture.model import CircularBody, Configuration, WingLike
+from juncture.model import CircularBody, Configuration, WingLike, rebuilt
 from tests.analysis.harris_reference import _boole_weights, harris_far_field
 from tests.deckgen import deck_from_seed, read_text
 from tests.support import EXAMPLE_DECK
@@ -87,9 +87,7 @@ def _wing_in_cylinder(root_y):
     body = CircularBody("body", [0.0, 6.0, 34.0, 40.0], [0.0, 2.0, 2.0, 0.0], axial="linear")
     wing, _ = _rect_wing(np.array([0.0, 1.0, 1.0, 1.0, 0.0]), root_y=root_y, span=6.0,
                          chord=4.0, z=0.3)
-    return Configuration({"body": body, "wing": wing.__class__(
-        **{**{f: getattr(wing, f) for f in wing.__dataclass_fields__ if not f.startswith("_")},
-           "le": wing.le + [18.0, 0.0, 0.0]})})
+    return Configuration({"body": body, "wing": rebuilt(wing, le=wing.le + [18.0, 0.0, 0.0])})
 
 
 def test_summed_components_count_the_buried_root_twice_and_say_so():
