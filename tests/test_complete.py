@@ -178,9 +178,34 @@ def test_arbitrary_section_fuselage(blocks):
             assert np.abs(body.signed_distance(geo.networks[name])).max() < 1e-9
 
 
-def test_fillets_need_a_circular_fuselage():
-    with pytest.raises(jc.GeometryError, match="fillets \\(TM-4406\\) need a circular"):
-        jc.complete(squashed(example()), "cubic")
+@pytest.mark.parametrize("fillet", ["cubic", "circular"])
+@pytest.mark.parametrize("blocks", [None, 4, 6])
+def test_fillets_on_an_arbitrary_section_fuselage(fillet, blocks):
+    """Past TM-4406 (juncture.fillet.section): the fillet starts on the section, the seams
+    are closed and every fuselage network point lies on the fuselage."""
+    cfg = squashed(example())
+    body = cfg["body"]
+    geo = jc.complete(cfg, fillet, blocks=blocks)
+    for side in ("upper", "lower"):
+        f = geo.fillets[f"fillet {side}"]
+        assert np.isfinite(f).all()
+        assert np.abs(body.signed_distance(f[:, 0])).max() < 1e-9 * body.length
+        assert body.signed_distance(f.reshape(-1, 3)).min() > -1e-9 * body.length
+    assert geo.stations["area_fillet"].max() > 0
+    assert np.all(geo.stations["area_fillet"] >= 0)
+    assert max(seam_gaps(geo)) < 1e-12
+    for name in geo.networks:
+        if name.startswith("body"):
+            assert np.abs(body.signed_distance(geo.networks[name])).max() < 1e-9 * body.length
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"keep_area": True}, "keep_area re-designs a circular fuselage"),
+    ({"single_network": True}, "use blocks=4 or 6"),
+])
+def test_what_arbitrary_section_fillets_do_not_do_yet_is_refused(kwargs, match):
+    with pytest.raises(jc.GeometryError, match=match):
+        jc.complete(squashed(example()), "cubic", **kwargs)
 
 
 def test_the_public_complete_is_the_function_whatever_was_imported_first():

@@ -59,6 +59,30 @@ def _pick(cfg, name, kind):
     return comp
 
 
+def _check_arbitrary(body, fillet, keep_area, opts):
+    """Fillets on an arbitrary-section fuselage (past TM-4406, :mod:`juncture.fillet.section`)
+    are made in the 4- and 6-block and split layouts; what is not built for them yet is
+    refused before any work."""
+    if isinstance(body, CircularBody) or fillet is None:
+        return
+    if keep_area:
+        raise GeometryError("keep_area re-designs a circular fuselage (TM-4406 eqs 11-14); "
+                            "this one has arbitrary sections: fillet it without keep_area",
+                            body.name)
+    if opts.single_network:
+        raise GeometryError("the single fuselage network rebuilds fillets in a circular "
+                            "fuselage's cross-sections; this one has arbitrary sections: use "
+                            "blocks=4 or 6 (--blocks) with a fillet", body.name)
+
+
+def _largest_radius(body):
+    """The largest radius of a fuselage; of an arbitrary-section one, its largest
+    equivalent radius sqrt(A / pi) over the stations."""
+    if isinstance(body, CircularBody):
+        return float(np.max(body.radius))
+    return float(np.sqrt(np.max(body.area_at(body.x_global)) / np.pi))
+
+
 def _extended_roots(cfg, body, attached, log):
     """The configuration with every root on the fuselage continued inside it.
 
@@ -68,8 +92,7 @@ def _extended_roots(cfg, body, attached, log):
     (what area and mass analyses integrate) each such component gets a new root section on
     those lines, half a radius inside the fuselage from its innermost intersection point.
     """
-    r = float(np.max(body.radius)) if isinstance(body, CircularBody) else \
-        float(np.sqrt(np.max(body.area_at(body.x_global)) / np.pi))
+    r = _largest_radius(body)
     for comp, inters in attached:
         pts = np.concatenate([i.points[i.found] for i in inters])
         if not len(pts):
@@ -124,8 +147,9 @@ def _root_exposure(cfg, wing, body0, sides, found, wing_lines):
 def _fillet_maker(wing, fillet, opts, body0):
     theta_u = np.radians(opts.theta_u_deg)
     rho = opts.fillet_radius
+    r_max = _largest_radius(body0)
     if fillet == "circular" and rho is None:
-        rho = 0.1 * float(body0.radius.max())
+        rho = 0.1 * r_max
 
     def make(body, previous=None, warm=False):
         # previous: the last iterate's (iu, il, fu, fl) on a body it re-designs; its fillets'
@@ -140,7 +164,7 @@ def _fillet_maker(wing, fillet, opts, body0):
         if fillet == "cubic":
             end_value = opts.end_value
             if end_value is None:
-                end_value = 0.25 * float(body0.radius.max()) if opts.end == "dy" else 0.5
+                end_value = 0.25 * r_max if opts.end == "dy" else 0.5
             kw = dict(theta_u=theta_u, end=opts.end, end_value=end_value,
                       blend_length=opts.blend_length, n_points=opts.n_fillet_points,
                       remedy=opts.remedy, blending=opts.blending)
@@ -328,10 +352,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     check_combination(fillet, keep_area, opts)
     wing = _pick(cfg, opts.wing, "wing")
     body0 = _pick(cfg, opts.body, "fuselage")
-    if not isinstance(body0, CircularBody) and fillet is not None:
-        raise GeometryError("fillets (TM-4406) need a circular fuselage; this one has "
-                            "arbitrary sections: use fillet=None (sharp intersections, "
-                            "TM-4607 eq 8)", body0.name)
+    _check_arbitrary(body0, fillet, keep_area, opts)
     log = [f"complete: fillet={fillet}, keep_area={keep_area}, {opts}"]
     if keep_area and fillet is not None and wing.n_stations < opts.min_lofting_lines:
         # Subdivide every input interval evenly: no new station crowds an input one.

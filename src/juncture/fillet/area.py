@@ -143,6 +143,8 @@ def wedge_area(body, lines, corner):
     """
     pts = np.asarray(lines.points, float)
     corner = np.asarray(corner, float)
+    if not hasattr(body, "section_at"):
+        return _polyline_wedge_area(body, lines, corner)
     x = corner[:, 0]
     ctr, r = body.section_at(x)
     # Polygon of the points closed through I, less its part inside the disk.
@@ -164,6 +166,37 @@ def wedge_area(body, lines, corner):
     end = pts[:, -1, 1:]
     green = _bezier_green(np.nan_to_num(ctrl[..., 1:])) + 0.5 * _cross(end, corner[:, 1:]) + arc
     return np.where(exact, np.abs(green), polygon)
+
+
+def _section_green(body, x, s_from, s_to):
+    """1/2 of the integral of (y dz - z dy) along an arbitrary body's section at stations x
+    (m,), from parameter s_from to s_to: the polyline's vertices between them, exactly."""
+    k, _ = body._pair(x)
+    lo, hi = np.minimum(s_from, s_to), np.maximum(s_from, s_to)
+    s = np.concatenate([lo[:, None], np.clip(body._u[k], lo[:, None], hi[:, None]),
+                        hi[:, None]], axis=1)
+    p = body.point(np.broadcast_to(x[:, None], s.shape), s)[..., 1:]
+    g = 0.5 * _cross(p[:, :-1], p[:, 1:]).sum(axis=1)
+    return np.where(s_to >= s_from, g, -g)
+
+
+def _polyline_wedge_area(body, lines, corner):
+    """:func:`wedge_area` on an arbitrary-section body: Green's theorem on the closed curve
+    fillet B -> E (the cubic exactly where ``control`` gives it, else its polyline), E -> I,
+    the section at x_I from I to B's parameter, and on to B (nothing where B lies at x_I)."""
+    pts = np.asarray(lines.points, float)
+    x = corner[:, 0]
+    start = pts[:, 0]
+    s_b, s_i = body.parameter_of(start), body.parameter_of(corner)
+    b_at = body.point(x, s_b)[:, 1:]
+    cubic, ctrl = _cubic_rows(lines)
+    yz = pts[..., 1:]
+    fillet = 0.5 * _cross(yz[:, :-1], yz[:, 1:]).sum(axis=1)
+    if cubic.any():
+        fillet = np.where(cubic, _bezier_green(np.nan_to_num(ctrl[..., 1:])), fillet)
+    total = (fillet + 0.5 * _cross(yz[:, -1], corner[:, 1:])
+             + _section_green(body, x, s_i, s_b) + 0.5 * _cross(b_at, start[:, 1:]))
+    return np.where(np.isfinite(total), np.abs(total), 0.0)
 
 
 def fillet_added_area(body, upper, lower, upper_inter, lower_inter, reference_body=None):

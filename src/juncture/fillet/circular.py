@@ -30,6 +30,8 @@ from ..errors import GeometryError
 from ..intersect import BodyIntersection, find_crossings
 from ..intersect.rays import SurfaceBound
 from ..misses import ended_lines, line_ends
+from ..model import CircularBody
+from .cubic import _runs, _wing_depth
 from .lines import FilletLines, blend_over
 
 __all__ = ["circular_fillet", "arcs"]
@@ -54,8 +56,12 @@ def arcs(body, P, C, rho, n_points):
     Returns ``(points (k, n_points, 3), T (k, 3), theta_T (k,))``.
     """
     x = P[:, 0]
-    ctr = body.center_at(x)
-    th = np.arctan2(C[:, 2] - ctr[:, 1], C[:, 1] - ctr[:, 0])
+    if isinstance(body, CircularBody):
+        ctr = body.center_at(x)
+        th = np.arctan2(C[:, 2] - ctr[:, 1], C[:, 1] - ctr[:, 0])
+    else:
+        # An arbitrary section: the circle about C touches it at C's nearest point.
+        th = body.parameter_of(np.concatenate([x[:, None], C[:, 1:]], axis=1))
     T = body.point(x, th)
     a0 = np.arctan2(T[:, 2] - C[:, 2], T[:, 1] - C[:, 1])
     a1 = np.arctan2(P[:, 2] - C[:, 2], P[:, 1] - C[:, 1])
@@ -96,6 +102,73 @@ def _section_normals(wing, side, sign):
         t = section_tangent(wing, side, points[..., 0], points[..., wing.span_axis])
         return np.stack([np.zeros(t.shape[:-1]), -t[..., 2], t[..., 1]], axis=-1) * sign
     return normal
+
+
+class _Solve:
+    """The tangency solve of :func:`circular_fillet` on some lofting lines, for given radius
+    factors (beta, times a reduction where an arc would enter the wing)."""
+
+    def __init__(self, body, distance, lines, n, rho_of, radius, on_section, inter, hint,
+                 circular):
+        self.body, self.distance, self.lines, self.n = body, distance, lines, n
+        self.rho_of, self.radius, self.on_section = rho_of, radius, on_section
+        self.inter, self.hint, self.circular = inter, hint, circular
+
+    def __call__(self, idx, bb):
+        ln, nn = self.lines[idx], self.n[idx]
+        rho_of, on_section, distance = self.rho_of, self.on_section, self.distance
+
+        def error(points, rows):
+            # The body's signed distance at C = P + rho beta n, less rho beta.
+            rows = np.asarray(rows)
+            shape = (len(rows),) + (1,) * (points.ndim - 2)
+            rho = bb[rows].reshape(shape) * rho_of(points[..., 0])
+            normal = (nn[rows].reshape(shape + (3,)) if on_section is None
+                      else on_section(points))
+            c = points + rho[..., None] * normal
+            return distance(c) - rho
+
+        error.row_aware = True
+        radius = self.radius
+        if not callable(radius) and on_section is None and self.circular:
+            # Constant rho: C moves with P, so the gradient is the body's at C.
+            offset = bb[:, None] * nn
+
+            def value_and_gradient(points, rows):
+                step = float(radius) * offset[rows]
+                e, g = self.body.radial_error_and_gradient(points + step)
+                return e - float(radius) * bb[rows], g
+            error.value_and_gradient = value_and_gradient
+
+        # At I the centre C = I + rho beta n is within rho beta of the body (on it only when
+        # n is its normal): I is never outside, so the crossing coming inboard from the tip
+        # is found before it and the search stops there.
+        inter = self.inter
+        u_low = np.where(inter.found[idx], inter.u[idx], -1.0)
+        # With the section's normal, C also turns with P (the section's curvature): no slope
+        # bound is known, so the lines are sampled densely.
+        bound = _lipschitz(self.body, radius) if on_section is None else None
+        return find_crossings(ln, error, u_low, lipschitz=bound,
+                              hint=None if self.hint is None else
+                              np.asarray(self.hint, float)[idx])
+
+    def arcs(self, idx, bb, P, found, n_points):
+        """(points, T, theta_T) of the arcs of the found lines, NaN elsewhere."""
+        k = len(idx)
+        pts = np.full((k, int(n_points), 3), np.nan)
+        T, th = np.full((k, 3), np.nan), np.full(k, np.nan)
+        if found.any():
+            x = P[found, 0]
+            rho = bb[found] * self.rho_of(x)
+            normal = self.n[idx[found]] if self.on_section is None else \
+                self.on_section(P[found])
+            C = P[found] + rho[:, None] * normal
+            pts[found], T[found], th[found] = arcs(self.body, P[found], C, rho, n_points)
+        return pts, T, th
+
+
+def _tolerance(body):
+    return 1e-10 * max(float(body.length), 1.0)
 
 
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
@@ -147,6 +220,10 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     m = lines.shape[0]
     if np.any(np.asarray(rho_of(lines[:, 0, 0])) <= 0):
         raise GeometryError("circular fillet radius must be > 0", wing.name)
+    circular = isinstance(body, CircularBody)
+    # The signed distance to the section: the circle's radial error, or the distance to an
+    # arbitrary section's polyline (both > 0 outside, with the same Lipschitz bound).
+    distance = body.radial_error if circular else body.signed_distance
     ends = line_ends(wing, body, inter)
     x_i = ends.points[:, 0]
     beta, blend_range = blend_over(x_i, blend_length, blend_range)
@@ -160,55 +237,45 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
     pts = np.repeat(I[:, None, :], int(n_points), axis=1)
     start, E = I.copy(), I.copy()
     if live.any():
-        ln, nn, bb = lines[live], n[live], beta[live]
-        k = len(ln)
-
-        offset = bb[:, None] * nn  # rho = 1: C = P + rho beta n
-        on_section = _section_normals(wing, side, sign) if tangent == "section" else None
-
-        def error(points, rows):
-            # |C - centre| - r(x) - rho beta: the body's radial error at C, less rho beta.
-            rows = np.asarray(rows)
-            shape = (len(rows),) + (1,) * (points.ndim - 2)
-            rho = bb[rows].reshape(shape) * rho_of(points[..., 0])
-            normal = (nn[rows].reshape(shape + (3,)) if on_section is None
-                      else on_section(points))
-            c = points + rho[..., None] * normal
-            return body.radial_error(c) - rho
-
-        error.row_aware = True
-        if not callable(radius) and on_section is None:
-            # Constant rho: C moves with P, so the gradient is the body's at C.
-            def value_and_gradient(points, rows):
-                step = float(radius) * offset[rows]
-                e, g = body.radial_error_and_gradient(points + step)
-                return e - float(radius) * bb[rows], g
-            error.value_and_gradient = value_and_gradient
-
-        # At I the centre C = I + rho beta n is within r + rho beta of the axis (equal only
-        # when n is radial): I is never outside, so the crossing coming inboard from the tip
-        # is found before it and the search stops there.
-        u_low = np.where(inter.found[live], inter.u[live], -1.0)
-        # With the section's normal, C also turns with P (the section's curvature): no slope
-        # bound is known, so the lines are sampled densely.
-        bound = _lipschitz(body, radius) if on_section is None else None
-        cr = find_crossings(ln, error, u_low, lipschitz=bound,
-                            hint=None if hint is None else np.asarray(hint, float)[live])
-        log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "
-                   f"{k} lofting lines in {cr.iterations} iterations")
         idx = np.flatnonzero(live)
+        on_section = _section_normals(wing, side, sign) if tangent == "section" else None
+        solve = _Solve(body, distance, lines, n, rho_of, radius, on_section, inter, hint, circular)
+        scale = np.ones(idx.size)
+        cr = solve(idx, beta[idx])
+        log.append(f"{wing.name} {side}: circular fillet solved on {int(cr.found.sum())} of "
+                   f"{idx.size} lofting lines in {cr.iterations} iterations")
         for j in idx[~cr.found]:
             log.append(f"{wing.name} {side} fillet line {j + 1}: no circular arc fits between "
                        f"the lofting line and {body.name}; left sharp")
-        ok = cr.found
-        P = cr.points[ok]
+        found, P, u_p = cr.found, cr.points, cr.u
+        arcs_ = solve.arcs(idx, beta[idx], P, found, n_points)
+        # A wing whose section by x = const curves towards the arc faster than 1 / rho (near
+        # a leading edge) lets the arc enter it: there the radius is halved until it does not.
+        deep = found & (_wing_depth(wing, arcs_[0]) > _tolerance(body)).any(axis=1)
+        if deep.any():
+            log.append(f"{wing.name} {side} fillet lines {_runs(idx[deep])}: radius reduced "
+                       "where the wing's section curves faster than the arc (it would enter "
+                       "the wing)")
+        for _ in range(12):
+            if not deep.any():
+                break
+            scale[deep] *= 0.5
+            rows = np.flatnonzero(deep)
+            again = solve(idx[rows], beta[idx[rows]] * scale[rows])
+            found[rows], P[rows], u_p[rows] = again.found, again.points, again.u
+            redo = solve.arcs(idx[rows], beta[idx[rows]] * scale[rows], again.points,
+                              again.found, n_points)
+            for full, part in zip(arcs_, redo):
+                full[rows] = part
+            deep = np.zeros_like(deep)
+            deep[rows] = again.found & (_wing_depth(wing, redo[0]) >
+                                        _tolerance(body)).any(axis=1)
+        ok = found & ~deep
         rows = idx[ok]
-        x = P[:, 0]
-        rho = beta[rows] * rho_of(x)
-        C = P + rho[:, None] * (n[rows] if on_section is None else on_section(P))
-        pts[rows], T, th = arcs(body, P, C, rho, n_points)
-        start[rows], E[rows], theta_b[rows], u_end[rows] = T, P, th, cr.u[ok]
+        pts[rows], start[rows], theta_b[rows] = arcs_[0][ok], arcs_[1][ok], arcs_[2][ok]
+        E[rows], u_end[rows] = P[ok], u_p[ok]
         beta = beta.copy()
+        beta[idx[ok]] *= scale[ok]
         beta[idx[~ok]] = 0.0
     out = FilletLines(side, pts, start, E, theta_b, u_end, beta, np.zeros(m, bool),
                       "circular", tuple(log), blend_range)

@@ -90,6 +90,7 @@ from ..errors import GeometryError
 from ..intersect import BodyIntersection, polyline_points
 from .endpoint import _end_coordinate, _line_direction, _segment
 from .lines import FilletLines, bezier, blend_factor, blend_over, hermite
+from .section import section_frame
 
 __all__ = ["FilletLines", "cubic_fillet", "EndMode", "Blending", "MissedLines", "hermite",
            "bezier", "blend_factor", "blend_over", "tangent_intersection_distance"]
@@ -145,13 +146,6 @@ def _fit_angle(radius, length, phi_max):
     return np.where(ok, np.clip(np.nan_to_num(phi), 0.0, np.maximum(phi_max, 0.0)), 0.0)
 
 
-def _wedge_angle(direction, theta_i, sign):
-    """phi_max: angle between the body circle's tangent at I (towards the fillet side) and a
-    wing line leaving I along ``direction`` (m, 2) in the y-z plane, in (-pi, pi]."""
-    phi = 0.5 * np.pi + sign * (np.arctan2(direction[:, 1], direction[:, 0]) - theta_i)
-    return (phi + np.pi) % (2 * np.pi) - np.pi
-
-
 def _wing_normal(wing, side, points, t_e, sign, inboard=None, h=1e-6):
     """(m, 3) unit normal of the wing surface at points on its lofting lines, away from the
     wing (up for the upper surface): the chordwise derivative crossed with the line.
@@ -182,14 +176,6 @@ def _wing_normal(wing, side, points, t_e, sign, inboard=None, h=1e-6):
         flat /= np.maximum(np.linalg.norm(flat, axis=1), 1e-300)[:, None]
         n = np.where(ok[:, None], n, flat)
     return n
-
-
-def _body_normal(body, x, theta):
-    """(m, 3) unit outward normal of a circular body at (x, theta), with the slopes of r(x)
-    and of the centre height (the body is locally a cone)."""
-    slope = body.radius_at(x, 1) + body.center_at(x, 1)[:, 1] * np.sin(theta)
-    n = np.stack([-slope, np.cos(theta), np.sin(theta)], axis=1)
-    return n / np.linalg.norm(n, axis=1)[:, None]
 
 
 def _ray_to_plane(origin, direction, normal, on_plane, scale):
@@ -232,11 +218,10 @@ def _clear(wing, side, body, control, tol, corner, n=17):
     second derivative of the radial gap, e''(0) = |T_B|^2 / r + 6 N_B . (P2 - B) >= 0 (N_B
     the body's normal with the cone's slope, unnormalised)."""
     p = bezier(control, np.linspace(0.0, 1.0, n))
-    out_body = body.radial_error(p.reshape(-1, 3)).reshape(p.shape[:2]) >= -tol
+    out_body = body.distance(p.reshape(-1, 3)).reshape(p.shape[:2]) >= -tol
     out_wing = _wing_depth(wing, p) <= tol
     B = control[:, 0]
-    ctr, r = body.section_at(B[:, 0])
-    flat = np.hypot(p[..., 1] - ctr[:, None, 0], p[..., 2] - ctr[:, None, 1]) - r[:, None]
+    flat = body.plane_gap(p, B[:, 0])
     line = control[:, 3, 1:] - corner[:, 1:]
     normal = np.stack([-line[:, 1], line[:, 0]], axis=1)
     normal *= np.where((normal * (B[:, 1:] - corner[:, 1:])).sum(1) < 0, -1.0, 1.0)[:, None]
@@ -244,13 +229,8 @@ def _clear(wing, side, body, control, tol, corner, n=17):
     above = ((p[..., 1:] - corner[:, None, 1:]) * normal[:, None]).sum(-1)
     sampled = np.all(out_body & out_wing & (flat >= -tol) & (above >= -tol)
                      | ~np.isfinite(p).all(-1), axis=1)
-    theta = np.arctan2(B[:, 2] - ctr[:, 1], B[:, 1] - ctr[:, 0])
-    slope = body.radius_at(B[:, 0], 1) + body.center_at(B[:, 0], 1)[:, 1] * np.sin(theta)
-    n_b = np.stack([-slope, np.cos(theta), np.sin(theta)], axis=1)
-    t0 = 3.0 * (control[:, 1] - B)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        bend = (t0 * t0).sum(1) / r + 6.0 * (n_b * (control[:, 2] - B)).sum(1)
-    return sampled & ~(bend < -1e-12 * (t0 * t0).sum(1) / np.where(r > 0, r, 1.0))
+    bend, scale = body.bend(control)
+    return sampled & ~(bend < -1e-12 * scale)
 
 
 def _leg_share(along, rate, leg):
@@ -337,6 +317,11 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     side = inter.side
     sign = 1.0 if side == "upper" else -1.0
     _check_options(wing, blending, remedy, missed_lines)
+    body = section_frame(body)
+    if not body.circular and blending == "points":
+        raise GeometryError("fillet blending 'points' (TM-4406 eq 10 as printed) starts inside "
+                            "a circular body's section; on an arbitrary-section fuselage use "
+                            "blending='scale'", wing.name)
     lines = wing.lofting_lines(side)
     m = lines.shape[0]
     found = np.asarray(inter.found, bool)
@@ -402,7 +387,7 @@ def _line_starts(wing, body, inter, lines, end, end_value, missed_lines, upper_r
         # intersection of the same line (else the line's root x), with dx/dy = dz/dy = 0.
         x_ref = lines[:, 0, 0] if upper_reference is None else np.where(
             upper_reference.found, upper_reference.points[:, 0], lines[:, 0, 0])
-        theta_i[paper_miss] = 0.5 * np.pi * sign
+        theta_i[paper_miss] = body.extreme(sign)
         I[paper_miss] = body.point(x_ref[paper_miss], theta_i[paper_miss])
         u_full[paper_miss], u_i[paper_miss], k[paper_miss] = 0.0, 0.0, 0
         for j in np.flatnonzero(paper_miss):
@@ -413,7 +398,7 @@ def _line_starts(wing, body, inter, lines, end, end_value, missed_lines, upper_r
     if plane_miss.any():
         from ..misses import line_ends
 
-        ends = line_ends(wing, body, inter)
+        ends = line_ends(wing, body.body, inter)
         I[plane_miss], theta_i[plane_miss] = ends.points[plane_miss], ends.theta[plane_miss]
         u_i[plane_miss] = u_full[plane_miss] = ends.u[plane_miss]
         log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(plane_miss))}: the "
@@ -445,9 +430,9 @@ def _start_angles(wing, body, side, sign, lines, I, theta_i, u_full, k, found, s
     # projected into x = x_I (the cross-section the added area is measured in): the fillet
     # keeps to the smaller wedge of the two.
     projected = t_full[:, 1:] / np.linalg.norm(t_full[:, 1:], axis=1)[:, None]
-    phi_max = np.minimum(_wedge_angle(trace, theta_i, sign),
-                         _wedge_angle(projected, theta_i, sign))
-    r_i = body.radius_at(I[:, 0])
+    phi_max = np.minimum(body.wedge(trace, I[:, 0], theta_i, sign),
+                         body.wedge(projected, I[:, 0], theta_i, sign))
+    r_i = body.ref_radius(I[:, 0])
     mu_full = np.linalg.norm(E_full[:, 1:] - I[:, 1:], axis=1)
     phi_fit = _fit_angle(r_i, K_SHARE * mu_full, phi_max)
     phi = np.where(found, np.minimum(theta_u, phi_fit), theta_u)
@@ -493,19 +478,19 @@ class _Construction:
 
     def geometry(self, phi):
         """Start point, tangent, longest legs and the paper's shares for arcs ``phi``."""
-        m, E, t_e, sign, paper_miss = self.m, self.E, self.t_e, self.sign, self.paper_miss
+        E, t_e, sign, paper_miss = self.E, self.t_e, self.sign, self.paper_miss
         theta_b = np.where(paper_miss, self.theta_i,
-                           self.theta_i + sign * self.scale * phi)
+                           self.body.start(self.x_i, self.theta_i, sign, self.scale * phi))
         B = self.body.point(self.x_i, theta_b)
-        # Circle tangent at B pointing towards the wing (theta moving towards theta_i).
-        t_b = np.stack([np.zeros(m), np.sin(theta_b), -np.cos(theta_b)], axis=1) * sign
+        # The section's tangent at B pointing towards the wing (back towards I).
+        t_b = self.body.tangent(self.x_i, theta_b, sign)
         t_b[paper_miss] = [0.0, 1.0, 0.0]
         dy = E[:, 1] - B[:, 1]
         # The longest legs that keep the control polygon between the two tangent planes: P1
         # on the body's tangent at B up to the wing's plane, P2 on the lofting line back to
         # the body's tangent plane at B.
-        n_b = _body_normal(self.body, self.x_i, theta_b)
-        n_b2 = np.stack([np.zeros(m), np.cos(theta_b), np.sin(theta_b)], axis=1)
+        n_b = self.body.normal(self.x_i, theta_b, sign)
+        n_b2 = self.body.normal2(self.x_i, theta_b, sign)
         leg_b = np.minimum(_ray_to_plane(B, t_b, self.n_e, E, E - B),
                            _ray_to_plane(B, t_b, self.n_e2, E, E - B))
         leg_e = np.minimum(_ray_to_plane(E, -t_e, n_b, B, E - B),
@@ -642,8 +627,7 @@ def _assembled(wing, body, side, sign, n_points, remedy, blending, I, B, E, T0, 
             (E - I)[:, None]
         control = (1.0 - beta)[:, None, None] * line_ctrl + beta[:, None, None] * control
         start = pts[:, 0]
-        ctr = body.center_at(start[:, 0])
-        theta_start = np.arctan2(start[:, 2] - ctr[:, 1], start[:, 1] - ctr[:, 0])
+        theta_start = body.parameter_of(start)
     else:
         pts = f
     if plane_miss.any():
@@ -675,7 +659,7 @@ def _parabola_lengths(body, B, theta_b, sign, E, t_e, leg_b, leg_e, mag_b, mag_e
     P0 and P3 are moved onto the end tangents at the same distances from E and from B, and
     the lengths limited to the longest legs (P1 and P2 each at least half-way along them).
     """
-    P0 = body.point(B[:, 0], theta_b + np.radians(10.0) * sign)
+    P0 = body.point(B[:, 0], body.start(B[:, 0], theta_b, sign, np.radians(10.0)))
     chord = np.linalg.norm(E - B, axis=1)
     P3 = E + t_e * chord[:, None]
     len_b = 0.5 * np.linalg.norm(E - P0, axis=1)
