@@ -65,10 +65,6 @@ def _check_arbitrary(body, fillet, keep_area, opts):
     refused before any work."""
     if isinstance(body, CircularBody) or fillet is None:
         return
-    if keep_area:
-        raise GeometryError("keep_area re-designs a circular fuselage (TM-4406 eqs 11-14); "
-                            "this one has arbitrary sections: fillet it without keep_area",
-                            body.name)
     if opts.single_network:
         raise GeometryError("the single fuselage network rebuilds fillets in a circular "
                             "fuselage's cross-sections; this one has arbitrary sections: use "
@@ -136,6 +132,16 @@ def _root_exposure(cfg, wing, body0, sides, found, wing_lines):
     def exposure(x):
         x = np.asarray(x, float)
         total = np.zeros(x.shape)
+        if not isinstance(body0, CircularBody):
+            # An arbitrary section scales about its centroid (fillet.section_redesign).
+            from .fillet.section_redesign import root_exposure_rate
+
+            for copies, (up, lo) in lines:
+                a, b = angle_at(up, x), angle_at(lo, x)
+                ok = np.isfinite(a) & np.isfinite(b)
+                rate = root_exposure_rate(body0, x[ok], a[ok], b[ok]) if ok.any() else 0.0
+                total[ok] += copies * rate
+            return total
         r0 = body0.radius_at(x)
         for copies, (up, lo) in lines:
             dth = np.abs(angle_at(up, x) - angle_at(lo, x))

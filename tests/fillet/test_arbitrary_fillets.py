@@ -14,6 +14,10 @@ surfaces (``tests.deckgen`` references, independent of juncture):
 - the line and the region it fills do not cross themselves (exact orientation predicate);
 - the area it adds equals a polygon of the same region with 4001 points of the curve and
   the deck's section between I and the start.
+
+With ``keep_area`` (each section scaled about its centroid): the re-designed fuselage's
+sections (polygons of 20001 surface points) plus the fillets have the deck's section area
+at every fillet station, and nowhere more than the deck's.
 """
 
 import warnings
@@ -23,6 +27,7 @@ import pytest
 from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
+import juncture as jc
 from juncture.fillet import circular_fillet, cubic_fillet, wedge_area
 from juncture.intersect import intersect_body_both
 from juncture.model import ArbitraryBody
@@ -183,6 +188,56 @@ def check_arbitrary_fillets(text, desc, kind="cubic", opts=None):
             line_dir = lines[rows, seg + 1] - lines[rows, seg]
             big = live & (np.linalg.norm(d1, axis=1) > 1e-4 * length)
             assert np.all(angle(d1[big], line_dir[big]) < ANGLE)
+
+
+def _deck_area(ref, x):
+    """Whole-section area of the deck's fuselage at x (its polyline, closed along y = 0)."""
+    k = _station_pair(ref, x)
+    poly = ref.section_at(x, k)
+    closed = np.vstack([poly, [0.0, poly[-1, 1]], [0.0, poly[0, 1]]])
+    return 2.0 * abs(_shoelace(closed))
+
+
+def _surface_areas(body, x, n=20001):
+    half = body.point(np.asarray(x, float)[:, None], np.linspace(0.0, 1.0, n)[None, :])
+    y, z = half[..., 1], half[..., 2]
+    return np.abs(np.sum(y[:, :-1] * z[:, 1:] - y[:, 1:] * z[:, :-1], axis=1)
+                  + y[:, -1] * z[:, -1] - y[:, 0] * z[:, 0])
+
+
+def check_arbitrary_keep_area(text, desc, fillet="cubic"):
+    cfg = read_text(text)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            geo = jc.complete(cfg, fillet, keep_area=True)
+        except jc.ConvergenceError as exc:  # refused in one line naming body and station
+            msg = str(exc)
+            assert "\n" not in msg and msg.startswith("body") and "x = " in msg, msg
+            return
+    ref = references(desc)["body"]
+    st_ = geo.stations
+    body1 = geo.configuration["body"]
+    a0 = np.array([_deck_area(ref, x) for x in st_["x"]])
+    np.testing.assert_allclose(_surface_areas(body1, st_["x"]) + st_["area_fillet"], a0,
+                               rtol=1e-7)
+    assert np.all(st_["area_fillet"] >= -1e-12 * a0.max())
+    xs = np.linspace(ref.x[0], ref.x[-1], 301)[1:-1]
+    deck = np.array([_deck_area(ref, x) for x in xs])
+    assert np.all(_surface_areas(body1, xs, 4001) <= deck * (1 + 1e-6) + 1e-12 * a0.max())
+
+
+@settings(max_examples=4, **FAST)
+@given(wing_body_decks(section="arbitrary"), st.sampled_from(["cubic", "circular"]))
+def test_keep_area_on_arbitrary_fuselages_conserves_area_and_never_grows(example, fillet):
+    check_arbitrary_keep_area(*example, fillet=fillet)
+
+
+@pytest.mark.slow
+@settings(max_examples=60, **SLOW)
+@given(wing_body_decks(section="arbitrary"), st.sampled_from(["cubic", "circular"]))
+def test_slow_keep_area_on_arbitrary_fuselages(example, fillet):
+    check_arbitrary_keep_area(*example, fillet=fillet)
 
 
 @pytest.mark.parametrize("height, root", FAMILIES)

@@ -302,6 +302,37 @@ def reduced_body(body, x, area_removed, densify=None, exposure=None):
     return BodyReduction(body, x, densify, exposure).body(area_removed)
 
 
+def _radius_of(body):
+    """r(x): a circular body's radius, an arbitrary one's equivalent radius sqrt(A / pi)."""
+    if hasattr(body, "radius_at"):
+        return body.radius_at
+    return lambda x: np.sqrt(body.area_at(x) / np.pi)
+
+
+def _new_stations(body, stations, tol):
+    """The re-designed body's segments: each original segment with the ``stations`` inside
+    it added, and the stations in a gap between two segments as a segment of their own on
+    the straight bridge (so the body can give up area there too). Returns a list of
+    ``(x (k,), (kind, i, piece, size))``: kind "segment" or "gap", i the original segment
+    (after the gap), ``piece`` its first piece and ``size`` its station count."""
+    xg = body.x_global
+    out, start, piece = [], 0, 0
+    for i, size in enumerate(body.segments):
+        sx = xg[start:start + size]
+        inner = stations[(stations > sx[0] + tol) & (stations < sx[-1] - tol)]
+        inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
+            if inner.size else inner
+        if out and sx[0] > out[-1][0][-1] + tol:
+            x_a, x_b = out[-1][0][-1], sx[0]
+            gap = stations[(stations > x_a + tol) & (stations < x_b - tol)]
+            if gap.size:
+                out.append((np.concatenate([[x_a], gap, [x_b]]), ("gap", i, piece, size)))
+        out.append((np.union1d(sx, inner), ("segment", i, piece, size)))
+        start += size
+        piece += size - 1
+    return out
+
+
 class BodyReduction:
     """The re-design of one body at fixed stations, for any removed areas (:func:`reduced_body`).
 
@@ -332,48 +363,15 @@ class BodyReduction:
         else:
             stations = xs
         tol = 1e-12 * max(body.length, 1.0)
-        new_x, seg_sizes, base, start, piece = [], [], [], 0, 0
-        counts = body.points_per_section
-        pps = [] if counts is not None else None
-        for i, size in enumerate(body.segments):
-            sx = xg[start:start + size]
-            inner = stations[(stations > sx[0] + tol) & (stations < sx[-1] - tol)]
-            inner = inner[np.min(np.abs(inner[:, None] - sx[None, :]), axis=1) > tol] \
-                if inner.size else inner
-            merged = np.union1d(sx, inner)
-            # The original radius and camber with their slopes, from this segment's own
-            # pieces (one-sided at a joint where the next segment starts at the same x).
-            rc, drc = body._interp.value_and_slope(merged - body.origin[0],
-                                                   (piece, piece + size - 2))
-            if new_x and sx[0] > new_x[-1][-1] + tol:
-                # A gap between segments (a straight bridge): stations inside it become a
-                # segment of their own, on the bridge, so the body can give up area there
-                # too (else those stations could not be compensated).
-                x_a, x_b = new_x[-1][-1], sx[0]
-                gap = stations[(stations > x_a + tol) & (stations < x_b - tol)]
-                if gap.size:
-                    bridge = np.concatenate([[x_a], gap, [x_b]])
-                    ra, rb = base[-1][0][-1], rc[0]
-                    slope = (rb - ra) / (x_b - x_a)
-                    new_x.append(bridge)
-                    seg_sizes.append(bridge.size)
-                    base.append((ra + (bridge - x_a)[:, None] * slope[None, :],
-                                 np.repeat(slope[None, :], bridge.size, axis=0)))
-                    if pps is not None:
-                        pps.append(counts[i - 1])
-            new_x.append(merged)
-            seg_sizes.append(merged.size)
-            base.append((rc, drc))
-            if pps is not None:
-                pps.append(counts[i])
-            start += size
-            piece += size - 1
-        self.xs, self.seg_sizes = xs, tuple(seg_sizes)
-        self.points_per_section = None if pps is None else tuple(pps)
+        layout = _new_stations(body, stations, tol)
+        new_x = [xs_ for xs_, _ in layout]
+        self.xs, self.seg_sizes = xs, tuple(len(xs_) for xs_ in new_x)
+        base = self._base(body, layout)
         self.xn = xn = np.concatenate(new_x)
         self.rc = np.concatenate([b[0] for b in base])
         self.drc = np.concatenate([b[1] for b in base])
         self.r0 = np.maximum(self.rc[:, 0], 0.0)
+        radius_at = _radius_of(body)
         lcov = np.zeros_like(xn) if exposure is None else np.asarray(exposure(xn), float)
         self.b = 2 * np.pi * self.r0 - lcov
         # removed(xn) = P a: linear interpolation between the stations, zero outside.
@@ -395,7 +393,7 @@ class BodyReduction:
         area_n = np.pi * self.r0 ** 2
         at = np.abs(xn[:, None] - xs[None, :]) <= tol
         area_s = np.where(at.any(axis=0), (area_n[:, None] * at).max(axis=0),
-                          np.pi * body.radius_at(xs) ** 2)
+                          np.pi * radius_at(xs) ** 2)
         with np.errstate(divide="ignore", invalid="ignore"):
             share = np.where(area_s[None, :] > 0, area_n[:, None] / area_s[None, :],
                              at.astype(float))
@@ -414,6 +412,29 @@ class BodyReduction:
             first += size
         self._h = (h_left, h_right)
         self._limit = None
+
+    def _base(self, body, layout):
+        """Per new segment, the original radius and camber (k, 2) and their slopes (k, 2):
+        from the segment's own pieces (one-sided at a joint where the next segment starts at
+        the same x), straight across a gap (a bridge)."""
+        base, counts, pps = [], body.points_per_section, []
+        for merged, (kind, i, piece, size) in layout:
+            if kind == "gap":
+                x_a, x_b = merged[0], merged[-1]
+                ra = base[-1][0][-1]
+                rb = body._interp.value_and_slope(np.array([x_b]) - body.origin[0],
+                                                  (piece, piece + size - 2))[0][0]
+                slope = (rb - ra) / (x_b - x_a)
+                base.append((ra + (merged - x_a)[:, None] * slope[None, :],
+                             np.repeat(slope[None, :], merged.size, axis=0)))
+                pps.append(None if counts is None else counts[i - 1])
+                continue
+            rc, drc = body._interp.value_and_slope(merged - body.origin[0],
+                                                   (piece, piece + size - 2))
+            base.append((rc, drc))
+            pps.append(None if counts is None else counts[i])
+        self.points_per_section = None if counts is None else tuple(pps)
+        return base
 
     def _gradient(self, values):
         """d(values)/dx along the new stations, segment by segment (np.gradient's scheme)."""
@@ -450,8 +471,11 @@ class BodyReduction:
 
     def body(self, area_removed):
         """The re-designed CircularBody for removed areas (one per station, input order)."""
-        from ..model import CircularBody
+        return self._build(self._reduce(area_removed))
 
+    def _reduce(self, area_removed):
+        """The radius reduction d (r0 - r, equivalent radius on an arbitrary section) at
+        every new station, and the state :meth:`jacobian` needs."""
         body, xn, r0, b = self.original, self.xn, self.r0, self.b
         a = np.asarray(area_removed, float)[self.order]
         linear, shared = self.P @ a, self.P_share @ a
@@ -480,30 +504,40 @@ class BodyReduction:
         # a point.
         d = np.where(den > 0, 2 * removed / np.where(den > 0, den, 1.0), 0.0)
         self._dd_da = np.where(den > 0, 1.0 / np.where(sqrt_disc > 0, sqrt_disc, np.inf), 0.0)
+        self._slope_d = self._slopes(d)
+        return d
+
+    def _build(self, d):
+        from ..model import CircularBody
+
+        body, xn, r0 = self.original, self.xn, self.r0
         # Hermite pieces with the original slopes less the reduction's: where nothing is
         # removed the new body is the original cubic exactly, and everywhere it depends
         # smoothly on the removed areas (a PCHIP rebuild would switch its slope limiter on a
         # cylindrical mid-body, and kink the area iteration's map).
         slopes = self.drc.copy()
-        slopes[:, 0] -= self._slopes(d)
+        slopes[:, 0] -= self._slope_d
         return CircularBody(body.name, xn - body.origin[0], r0 - d, self.rc[:, 1], body.origin,
                             self.seg_sizes, body.mirrored, body.axial, self.points_per_section,
                             slopes)
 
-    def jacobian(self, xq):
-        """d(r0 - r)(xq) / d(area_removed) of the last :meth:`body`: (len(xq), stations)."""
+    def _between(self, dnode, xq):
+        """d(xq) from nodal values: the Hermite interpolant of the nodal d with slopes
+        grad(d), linear in d, so each column of ``dnode`` is interpolated the same way."""
         from ..model.body import hermite_pieces
 
+        limited, coef = self._limit
+        dslope = np.where(limited[:, None], coef[:, None] * dnode, self._gradient(dnode))
+        return hermite_pieces(self.xn, dnode, dslope, self.seg_sizes)(xq)
+
+    def jacobian(self, xq):
+        """d(r0 - r)(xq) / d(area_removed) of the last :meth:`body`: (len(xq), stations)."""
         capped, by_share, clipped = self._rows
         used = np.where(capped[:, None], np.where(by_share[:, None], self.P_share, 0.0), self.P)
         used = np.where(clipped[:, None], 0.0, used)
         dnode = self._dd_da[:, None] * used  # d(d_n) / d(a), sorted station order
-        # d(xq) is the Hermite interpolant of the nodal d with slopes grad(d), linear in d:
-        # interpolate each column of dnode the same way.
         xq = np.asarray(xq, float)
-        limited, coef = self._limit
-        dslope = np.where(limited[:, None], coef[:, None] * dnode, self._gradient(dnode))
-        d_q = hermite_pieces(self.xn, dnode, dslope, self.seg_sizes)(xq)
+        d_q = self._between(dnode, xq)
         inside = (xq >= self.xn[0]) & (xq <= self.xn[-1])
         out = np.zeros((xq.size, self.xs.size))
         out[:, self.order] = np.where(inside[:, None], d_q, 0.0)
@@ -650,6 +684,13 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
                             body.name)
     if compensate == "fillet":
         exposure = None
+    elif exposure is None and not hasattr(body, "radius_at"):
+        raise GeometryError("keep_area on an arbitrary-section body measures the wing root "
+                            "it uncovers by its covered perimeter: pass exposure, or "
+                            "compensate='fillet'", body.name)
+    from .section_redesign import reduction_for
+
+    radius = _radius_of(body)
     current = body
     first_met = None
     history = []
@@ -661,13 +702,13 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         if compensate == "fillet":
             # TM-4406: the fillets alone.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])
-            r_orig, r_now = body.radius_at(x), current.radius_at(x)
+            r_orig, r_now = radius(x), _radius_of(current)(x)
             only = sides * only
             a_f, covered = only, 0.0
         elif exposure is not None:
             # Fillets by their areas; every uncovered root by its covered perimeter.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])
-            r_orig, r_now = body.radius_at(x), current.radius_at(x)
+            r_orig, r_now = radius(x), _radius_of(current)(x)
             covered = exposure(x)
             only = sides * only
             a_f = only + covered * (r_orig - r_now)
@@ -675,7 +716,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
             x, only, a_f = fillet_added_area(current, *parts[2:], *parts[:2],
                                              reference_body=body)
             only, a_f = sides * only, sides * a_f
-            r_orig, r_now = body.radius_at(x), current.radius_at(x)
+            r_orig, r_now = radius(x), _radius_of(current)(x)
             covered = 0.0  # the polygons already hold the uncovered root
         a0 = np.pi * r_orig ** 2
         a_b = np.pi * r_now ** 2
@@ -694,9 +735,9 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         g = only if (exposure is not None or compensate == "fillet") else a_f
         given = a0 - a_b - covered * (r_orig - r_now)
         x_low = parts[3].points[:, 0, 0]
-        sample = (r_orig - r_now, body.radius_at(x_low) - current.radius_at(x_low), g)
+        sample = (r_orig - r_now, radius(x_low) - _radius_of(current)(x_low), g)
         if reduction is None:
-            reduction, t = BodyReduction(body, x, exposure=exposure), given
+            reduction, t = reduction_for(body, x, exposure=exposure), given
         f = g - given
         size = np.abs(f).max()
         if history and size > np.abs(history[-1][1]).max():

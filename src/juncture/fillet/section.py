@@ -220,7 +220,9 @@ class PolylineFrame:
         return self.body.signed_distance(q)
 
     def bend(self, control):
-        """A straight piece has no curvature: e''(0) = 6 N_B . (P2 - B) (scale 0)."""
+        """A straight piece has no curvature: e''(0) = 6 N_B . (P2 - B), with the scale
+        6e4 |P2 - B| (so that P2 may lie 6e-8 of its distance from B below the tangent
+        plane: round-off where the construction put it on the plane)."""
         B = control[:, 0]
         s = self.body.parameter_of(B)
         # The piece the curve leaves along: the one P1 lies towards (B -> P1 is its tangent).
@@ -228,7 +230,8 @@ class PolylineFrame:
         toward_up = ((control[:, 1, 1:] - B[:, 1:]) * up).sum(1) > 0
         sign = np.where(toward_up, -1.0, 1.0)  # the fillet side is opposite to its travel
         n = self.normal(B[:, 0], s, sign)
-        return 6.0 * (n * (control[:, 2] - B)).sum(1), np.zeros(len(B))
+        leg = control[:, 2] - B
+        return 6.0 * (n * leg).sum(1), 6e4 * np.linalg.norm(leg, axis=1)
 
     def parameter_of(self, points):
         return self.body.parameter_of(points)

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["arc_fractions", "matched_pairs"]
+__all__ = ["arc_fractions", "matched_pairs", "area_and_centroid"]
 
 
 def arc_fractions(sec):
@@ -31,13 +31,15 @@ def arc_fractions(sec):
     return s / s[-1] if s[-1] > 0 else np.linspace(0.0, 1.0, len(sec))
 
 
-def matched_pairs(sections):
+def matched_pairs(sections, params=None):
     """Consecutive half-sections sampled at the union of their vertex fractions.
 
     Parameters
     ----------
     sections : sequence of (m_k, 2) float
         Half-sections (y, z), bottom to top, at increasing stations (n of them, n >= 2).
+    params : sequence of (m_k,) float, optional
+        The fraction of each vertex (default: :func:`arc_fractions`).
 
     Returns
     -------
@@ -49,7 +51,8 @@ def matched_pairs(sections):
     count : (n - 1,) int
         The unpadded length of each row.
     """
-    fr = [arc_fractions(s) for s in sections]
+    fr = [arc_fractions(s) for s in sections] if params is None else \
+        [np.asarray(p, float) for p in params]
     us = [np.union1d(f0, f1) for f0, f1 in zip(fr[:-1], fr[1:])]
     count = np.array([v.size for v in us])
     m = int(count.max())
@@ -64,3 +67,19 @@ def matched_pairs(sections):
             out[k, :v.size, 1] = np.interp(v, f, sec[:, 1])
             out[k, v.size:] = out[k, v.size - 1]
     return u, a, b, count
+
+
+def area_and_centroid(sec):
+    """Area of whole sections (both halves) and the height of their area centroid, for
+    half-section polylines (..., m, 2) closed along y = 0 (y = 0 by symmetry); a section
+    of no area (a pointed nose) gets its mean point height."""
+    sec = np.asarray(sec, float)
+    zero = np.zeros(sec.shape[:-2] + (1,))
+    y = np.concatenate([sec[..., 0], zero, zero], axis=-1)
+    z = np.concatenate([sec[..., 1], sec[..., -1:, 1], sec[..., :1, 1]], axis=-1)
+    y1, z1 = np.roll(y, -1, axis=-1), np.roll(z, -1, axis=-1)
+    c = y * z1 - y1 * z
+    half = 0.5 * c.sum(-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        zc = ((z + z1) * c).sum(-1) / (6.0 * half)
+    return 2.0 * np.abs(half), np.where(half != 0, zc, sec[..., 1].mean(-1))

@@ -43,7 +43,7 @@ from ..errors import GeometryError
 from ._arrays import check_finite, frozen
 from ._pchip import hermite_coefficients, pchip_coefficients
 from ._range_max import range_max, range_max_table
-from ._sections import matched_pairs
+from ._sections import area_and_centroid, matched_pairs
 
 __all__ = ["CircularBody", "ArbitraryBody", "AxialInterpolation"]
 
@@ -489,6 +489,12 @@ class ArbitraryBody:
         every method here evaluates the given polylines exactly.
     mirrored : bool
         As for :class:`CircularBody`.
+    params : sequence of (m_k,) float, optional
+        The surface parameter of each section's points, increasing from 0 to 1 (default:
+        normalised arc length, the deck's convention). Sections are matched between stations
+        by these values. A body that inserts stations into another one (the fuselage
+        re-designed at fixed area) gives its new sections the parameters of the surface they
+        were cut from, so that it is that surface exactly where nothing changes.
 
     Examples
     --------
@@ -510,6 +516,7 @@ class ArbitraryBody:
     segments: tuple = None
     resample: int = 201
     mirrored: bool = False
+    params: tuple = None
     _u: np.ndarray = None
     _a: np.ndarray = None
     _d: np.ndarray = None
@@ -533,7 +540,18 @@ class ArbitraryBody:
                                     name, k + 1)
             secs.append(a)
         seg, _ = _segment_layout(x, self.segments, name)
-        u, a, b, count = matched_pairs(secs)
+        params = None
+        if self.params is not None:
+            params = []
+            if len(self.params) != len(secs):
+                raise GeometryError(f"{len(secs)} sections but {len(self.params)} params", name)
+            for k, (pk, sec) in enumerate(zip(self.params, secs)):
+                pk = frozen(pk, (len(sec),), name, f"params of section {k + 1}")
+                if pk[0] != 0.0 or pk[-1] != 1.0 or np.any(np.diff(pk) < 0):
+                    raise GeometryError("params must increase from 0 to 1", name, k + 1)
+                params.append(pk)
+            params = tuple(params)
+        u, a, b, count = matched_pairs(secs, params)
         # Speed of the matched points along x per station pair: the section moves by at most
         # this much per unit x (0 across a repeated joint station, where it steps instead).
         h = np.diff(x)
@@ -545,7 +563,8 @@ class ArbitraryBody:
         d = b - a
         d.flags.writeable = False
         for field, value in (("x", x), ("sections", tuple(secs)), ("segments", seg),
-                             ("mirrored", bool(self.mirrored)), ("_u", u), ("_a", a),
+                             ("mirrored", bool(self.mirrored)), ("params", params),
+                             ("_u", u), ("_a", a),
                              ("_d", d), ("_count", count), ("_grid", grid),
                              ("_lipschitz", (float(1.0 + speed.max()),
                                              range_max_table(speed)))):
@@ -651,6 +670,15 @@ class ArbitraryBody:
                             + y[..., -1] * z[..., -1] - y[..., 0] * z[..., 0])
         inside = (np.asarray(x) >= self.x[0]) & (np.asarray(x) <= self.x[-1])
         return np.where(inside, 2.0 * half, 0.0)
+
+    def centroid_at(self, x):
+        """(..., 2): the area centroid of the whole section at x (y = 0 by symmetry).
+
+        The half polygon is closed along y = 0 as in :meth:`area_at`; a section of no area
+        (a pointed nose) gives its mean point height.
+        """
+        _, zc = area_and_centroid(self._sections_at(x))
+        return np.stack([np.zeros_like(zc), zc], axis=-1)
 
     @property
     def error_lipschitz(self):
