@@ -88,3 +88,17 @@ def test_a_re_designed_fuselage_round_trips_with_its_slopes(tmp_path):
     np.testing.assert_array_equal(back.slopes, body.slopes)
     xq = np.linspace(body.x_global[0], body.x_global[-1], 997)
     np.testing.assert_array_equal(back.radius_at(xq), body.radius_at(xq))
+
+
+def test_a_re_designed_arbitrary_fuselage_round_trips_with_its_parameters(tmp_path):
+    from tests.test_complete import squashed
+
+    geo = jc.complete(squashed(example()), "cubic", keep_area=True)
+    body = geo.configuration["body"]
+    assert body.params is not None
+    jc.write(geo.configuration, tmp_path / "redesigned.json")
+    back = jc.read(tmp_path / "redesigned.json")["body"]
+    xq = np.linspace(body.x_global[0], body.x_global[-1], 397)
+    s = np.linspace(0.0, 1.0, 41)
+    np.testing.assert_array_equal(back.point(xq[:, None], s[None]),
+                                  body.point(xq[:, None], s[None]))

@@ -140,10 +140,16 @@ def _component(d, index):
                                 None if pps is None else tuple(pps),
                                 _numbers(d, "slopes", where, None))
         if ctype == "arbitrary_body":
-            _known(d, {"name", "type", "x", "sections", "segments", "mirrored"}, where)
+            _known(d, {"name", "type", "x", "sections", "segments", "mirrored", "params"},
+                   where)
+            params = None
+            if "params" in d:
+                params = tuple(_numbers({"params": p}, "params", f"{where}, params {i + 1}")
+                               for i, p in enumerate(_get(d, "params", where, list)))
             return ArbitraryBody(name, _numbers(d, "x", where), _sections(d, where),
                                  _integers(d, "segments", where, None),
-                                 mirrored=_get(d, "mirrored", where, bool, False))
+                                 mirrored=_get(d, "mirrored", where, bool, False),
+                                 params=params)
     except GeometryError as exc:
         raise SpecError(f"{where}: {exc.reason}" + (f" (station {exc.station})"
                                                    if exc.station is not None else "")) from None
@@ -251,9 +257,12 @@ def configuration_to_dict(cfg):
                 d["slopes"] = _lst(c.slopes)
             comps.append(d)
         else:
-            comps.append({"name": c.name, "type": "arbitrary_body", "x": _lst(c.x),
-                          "sections": [_lst(s) for s in c.sections],
-                          "segments": list(c.segments), "mirrored": c.mirrored})
+            d = {"name": c.name, "type": "arbitrary_body", "x": _lst(c.x),
+                 "sections": [_lst(s) for s in c.sections],
+                 "segments": list(c.segments), "mirrored": c.mirrored}
+            if c.params is not None:
+                d["params"] = [_lst(p) for p in c.params]
+            comps.append(d)
     ref = {k: v for k, v in (("area", cfg.reference_area), ("chord", cfg.reference_chord),
                              ("moment_x", cfg.moment_x)) if v is not None}
     out = {"juncture": FORMAT_VERSION, "title": cfg.title, "reference": ref,
