@@ -59,18 +59,6 @@ def _pick(cfg, name, kind):
     return comp
 
 
-def _check_arbitrary(body, fillet, keep_area, opts):
-    """Fillets on an arbitrary-section fuselage (past TM-4406, :mod:`juncture.fillet.section`)
-    are made in the 4- and 6-block and split layouts; what is not built for them yet is
-    refused before any work."""
-    if isinstance(body, CircularBody) or fillet is None:
-        return
-    if opts.single_network:
-        raise GeometryError("the single fuselage network rebuilds fillets in a circular "
-                            "fuselage's cross-sections; this one has arbitrary sections: use "
-                            "blocks=4 or 6 (--blocks) with a fillet", body.name)
-
-
 def _largest_radius(body):
     """The largest radius of a fuselage; of an arbitrary-section one, its largest
     equivalent radius sqrt(A / pi) over the stations."""
@@ -358,7 +346,6 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     check_combination(fillet, keep_area, opts)
     wing = _pick(cfg, opts.wing, "wing")
     body0 = _pick(cfg, opts.body, "fuselage")
-    _check_arbitrary(body0, fillet, keep_area, opts)
     log = [f"complete: fillet={fillet}, keep_area={keep_area}, {opts}"]
     if keep_area and fillet is not None and wing.n_stations < opts.min_lofting_lines:
         # Subdivide every input interval evenly: no new station crowds an input one.

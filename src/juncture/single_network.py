@@ -186,17 +186,23 @@ def interpolated_lines(wing, body, lines, ends, X):
     sb, wb, ok = _bracket(B[:, 0], X)
     # In the body's cylindrical coordinates (x, angle, height above the surface), so that
     # the interpolated points stay outside the body where both lines are.
-    ctr, r = body.section_at(pts[..., 0])
-    ang = np.arctan2(pts[..., 2] - ctr[..., 1], pts[..., 1] - ctr[..., 0])
-    height = np.hypot(pts[..., 2] - ctr[..., 1], pts[..., 1] - ctr[..., 0]) - r
     w = wb[:, None]
     xi = (1 - w) * pts[sb, :, 0] + w * pts[sb + 1, :, 0]
-    d_ang = (ang[sb + 1] - ang[sb] + np.pi) % (2 * np.pi) - np.pi
-    ai = ang[sb] + w * d_ang
-    hi = (1 - w) * height[sb] + w * height[sb + 1]
-    c_i, r_i = body.section_at(xi)
-    near_body = np.stack([xi, c_i[..., 0] + (r_i + hi) * np.cos(ai),
-                          c_i[..., 1] + (r_i + hi) * np.sin(ai)], axis=-1)
+    if hasattr(body, "section_at"):
+        ctr, r = body.section_at(pts[..., 0])
+        ang = np.arctan2(pts[..., 2] - ctr[..., 1], pts[..., 1] - ctr[..., 0])
+        height = np.hypot(pts[..., 2] - ctr[..., 1], pts[..., 1] - ctr[..., 0]) - r
+        d_ang = (ang[sb + 1] - ang[sb] + np.pi) % (2 * np.pi) - np.pi
+        ai = ang[sb] + w * d_ang
+        hi = (1 - w) * height[sb] + w * height[sb + 1]
+        c_i, r_i = body.section_at(xi)
+        near_body = np.stack([xi, c_i[..., 0] + (r_i + hi) * np.cos(ai),
+                              c_i[..., 1] + (r_i + hi) * np.sin(ai)], axis=-1)
+    else:
+        # An arbitrary section: (x, surface parameter, distance off the section).
+        s_par, height = _section_coordinates(body, pts)
+        near_body = _off_section(body, xi, (1 - w) * s_par[sb] + w * s_par[sb + 1],
+                                 (1 - w) * height[sb] + w * height[sb + 1])
     # And in the wing's (span station, chord fraction, height above the surface), so that
     # they stay outside the wing where both lines are; the two blended along the line.
     a_t = wing.thickness_axis
@@ -347,9 +353,11 @@ def _blend_outside(body, pa, pb, w):
     coordinates (x, angle, height above the surface) for a circular body, so that points
     outside it stay outside; linear otherwise."""
     w = np.asarray(w, float)[:, None]
-    if not hasattr(body, "section_at"):
-        return (1 - w) * pa + w * pb
     x = (1 - w[:, 0]) * pa[:, 0] + w[:, 0] * pb[:, 0]
+    if not hasattr(body, "section_at"):
+        (s0, h0), (s1, h1) = (_section_coordinates(body, p) for p in (pa, pb))
+        return _off_section(body, x, (1 - w[:, 0]) * s0 + w[:, 0] * s1,
+                            (1 - w[:, 0]) * h0 + w[:, 0] * h1)
     polar = []
     for p in (pa, pb):
         c, r = body.section_at(p[:, 0])
@@ -400,7 +408,9 @@ def _curve_point_at_x(wing, body, side, fa, fb, pa, pb, X, max_iter=80):
         lines = wing.point(spans[None, :], c[:, None], side)
         # A dense scan, without the exact screening: near the jump the lines graze the
         # body, where proving that a line misses it is slow (and not needed here).
-        cr = find_crossings(lines, error, u_low)
+        # (More iterations than the default: at a joint step of an arbitrary fuselage the
+        # error jumps, and regula falsi creeps up to the jump.)
+        cr = find_crossings(lines, error, u_low, max_iter=2000)
         pc = np.where(cr.found[:, None], cr.points, polyline_points(lines, np.full(
             (len(c), 1), u_low))[:, 0])
         gc = pc[:, 0] - X[idx]
@@ -452,6 +462,27 @@ def _outside(wing, body, pts):
     in_wing = (frac > 0) & (frac < 1) & (p[:, a_t] > lo + scale) & (p[:, a_t] < up - scale)
     in_body = _radial(body, p) < -scale
     return (~in_wing & ~in_body).reshape(shape)
+
+
+def _section_coordinates(body, pts):
+    """(surface parameter, signed distance) of points (..., 3) off an arbitrary section."""
+    flat = np.asarray(pts, float).reshape(-1, 3)
+    shape = np.shape(pts)[:-1]
+    return (body.parameter_of(flat).reshape(shape),
+            body.signed_distance(flat).reshape(shape))
+
+
+def _off_section(body, x, s, h):
+    """Points at distance h (...) off an arbitrary section at (x, s), along its normal in
+    the plane x = const (at a vertex, the bisector of its two pieces' normals)."""
+    from .fillet.section import PolylineFrame
+
+    x, s, h = np.broadcast_arrays(*(np.asarray(v, float) for v in (x, s, h)))
+    frame = PolylineFrame(body)
+    xf, sf = x.ravel(), s.ravel()
+    n = frame.normal2(xf, sf, np.ones(xf.size)) + frame.normal2(xf, sf, -np.ones(xf.size))
+    n /= np.maximum(np.linalg.norm(n, axis=1), 1e-300)[:, None]
+    return body.point(x, s) + h[..., None] * n.reshape(x.shape + (3,))
 
 
 def _radial(body, pts):

@@ -273,3 +273,31 @@ def test_slow_cubic_fillets_on_arbitrary_fuselages(example, opts):
 @given(wing_body_decks(section="arbitrary"), st.floats(0.03, 0.3))
 def test_slow_circular_fillets_on_arbitrary_fuselages(example, rho):
     check_arbitrary_fillets(*example, kind="circular", opts={"rho": rho})
+
+
+def check_single_network(text, desc, fillet):
+    from tests.deckgen.references import fillet_depths
+
+    cfg = read_text(text)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        geo = jc.complete(cfg, fillet, single_network=True)
+    for name, net in geo.networks.items():
+        assert np.isfinite(net).all(), name
+    fu, fl = geo.fillets["fillet upper"], geo.fillets["fillet lower"]
+    np.testing.assert_array_equal(fl[:, 0, 0], fu[:, 0, 0])
+    inside_body, inside_wing = fillet_depths(geo, desc)
+    assert inside_body <= TOL and inside_wing <= TOL, (inside_body, inside_wing)
+
+
+@settings(max_examples=6, **FAST)
+@given(wing_body_decks(section="arbitrary"), st.sampled_from(["cubic", "circular"]))
+def test_single_network_with_fillets_on_arbitrary_fuselages(example, fillet):
+    check_single_network(*example, fillet)
+
+
+@pytest.mark.slow
+@settings(max_examples=80, **SLOW)
+@given(wing_body_decks(section="arbitrary"), st.sampled_from(["cubic", "circular"]))
+def test_slow_single_network_with_fillets_on_arbitrary_fuselages(example, fillet):
+    check_single_network(*example, fillet)

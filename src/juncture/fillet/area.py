@@ -608,6 +608,19 @@ def _feasible(reduction, t, step, scale=1.0, tries=6):
     return trial
 
 
+def _fillets_on(make_fillets, current, previous, warm, it, x):
+    """make_fillets on an iterate; on a re-designed body a failure (a lofting line that
+    grazes it) is the iteration's, named by the body and the stations it had reached."""
+    if x is None:
+        return make_fillets(current, previous, warm)
+    try:
+        return make_fillets(current, previous, warm)
+    except ConvergenceError as exc:
+        raise ConvergenceError(f"area compensation stopped at iteration {it} (stations x = "
+                               f"{x.min():.6g} to {x.max():.6g}): on the re-designed body, "
+                               f"{exc.reason}", current.name) from None
+
+
 def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, exposure=None,
               memory=1, initial=None, compensate: Compensate = "section"):
     """Shrink the body until body area + added area equals the original area (TM-4406).
@@ -696,9 +709,10 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
     history = []
     previous, warm = None, False
     reduction = t = None
+    x = None  # the stations of the last iterate
     for it in range(1, max_iterations + 1):
         parts = initial if (it == 1 and initial is not None) else \
-            make_fillets(current, previous, warm)
+            _fillets_on(make_fillets, current, previous, warm, it, x)
         if compensate == "fillet":
             # TM-4406: the fillets alone.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])

@@ -1,9 +1,10 @@
-"""Circular arcs in a plane x = const, tangent to a circular body and to the wing's section.
+"""Circular arcs in a plane x = const, tangent to the body's section and to the wing's.
 
 The wing's section by the plane x = X is the curve of its surface points at that x (chord
 fraction from the planform at each span station, clamped to the chord); an arc of radius rho
 about C is tangent to it at P when C = P + rho n (n the section's normal away from the wing)
-and to the body circle when |C - centre| = r + rho. Used by the circular fillet of every
+and to the body circle when |C - centre| = r + rho (to an arbitrary section when C lies at
+the distance rho from its polyline). Used by the circular fillet of every
 layout (:mod:`juncture.fillet.circular`) and by the single-network layout.
 """
 
@@ -60,15 +61,23 @@ def planar_arcs(wing, body, side, X, rho, near, n_points, n_grid=64, max_iter=60
     y_c = 0.0 if origin is None else float(origin[1])
     s_hi = np.minimum(y_c + 2.0 * np.abs(near[:, wing.span_axis] - y_c) + 2.0 * rho,
                       float(wing.span_stations[-1]))
-    ctr, r = body.section_at(X)
+    if hasattr(body, "section_at"):
+        ctr, r = body.section_at(X)
+
+        def gap(c):
+            return np.hypot(c[..., 1] - ctr[:, None, 0], c[..., 2] - ctr[:, None, 1]) - \
+                r[:, None]
+    else:
+        # An arbitrary section: the distance to its polyline (c lies in the plane x = X).
+        def gap(c):
+            return body.signed_distance(c)
 
     def error(span):  # span (m, k)
         p = section(wing, side, X[:, None], span)
         t = section_tangent(wing, side, X[:, None], span)
         nrm = np.stack([np.zeros_like(span), -t[..., 2], t[..., 1]], axis=-1) * sign
         c = p + rho[:, None, None] * nrm
-        d = np.hypot(c[..., 1] - ctr[:, None, 0], c[..., 2] - ctr[:, None, 1])
-        return d - r[:, None] - rho[:, None], p, c
+        return gap(c) - rho[:, None], p, c
 
     grid = s_hi[:, None] - np.linspace(0.0, 1.0, n_grid)[None, :] * (s_hi - y_c)[:, None]
     e, _, _ = error(grid)
