@@ -408,7 +408,9 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     if opts.single_network:
         from .single_network import reinterpolated, single_network
 
+        before = (len(fu.log), len(fl.log))
         fu, fl, lower_points = reinterpolated(wing, body, fu, fl, iu, il, fillet)
+        log.extend(list(fu.log[before[0]:]) + list(fl.log[before[1]:]))
         nets, seams = single_network(wing, body, fu, fl, n_half, net_stations)
     elif layout == "split":
         nets, seams = _split_layout(body, wing, fu, fl, attached, n_half, log, net_stations)

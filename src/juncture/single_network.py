@@ -199,10 +199,10 @@ def interpolated_lines(wing, body, lines, ends, X):
         near_body = np.stack([xi, c_i[..., 0] + (r_i + hi) * np.cos(ai),
                               c_i[..., 1] + (r_i + hi) * np.sin(ai)], axis=-1)
     else:
-        # An arbitrary section: (x, surface parameter, distance off the section).
-        s_par, height = _section_coordinates(body, pts)
+        # An arbitrary section: (x, surface parameter of the nearest point, offset from it).
+        s_par, off = _section_coordinates(body, pts)
         near_body = _off_section(body, xi, (1 - w) * s_par[sb] + w * s_par[sb + 1],
-                                 (1 - w) * height[sb] + w * height[sb + 1])
+                                 (1 - w[..., None]) * off[sb] + w[..., None] * off[sb + 1])
     # And in the wing's (span station, chord fraction, height above the surface), so that
     # they stay outside the wing where both lines are; the two blended along the line.
     a_t = wing.thickness_axis
@@ -220,6 +220,9 @@ def interpolated_lines(wing, body, lines, ends, X):
     for other in (near_wing, near_body):
         bad = ~_outside(wing, body, blended) & _outside(wing, body, other)
         blended = np.where(bad[..., None], other, blended)
+    # Where both dip into the wing (at a rounded leading edge, where the height above the
+    # surface at a fixed x says little), the point is put on the wing's surface there.
+    blended = _onto_wing(wing, lines.side, blended)
     out = np.where(ok[:, None, None], blended, pts)
     start, theta, _ = _moved_starts(body, lines, X)
     out[:, 0] = start
@@ -357,7 +360,7 @@ def _blend_outside(body, pa, pb, w):
     if not hasattr(body, "section_at"):
         (s0, h0), (s1, h1) = (_section_coordinates(body, p) for p in (pa, pb))
         return _off_section(body, x, (1 - w[:, 0]) * s0 + w[:, 0] * s1,
-                            (1 - w[:, 0]) * h0 + w[:, 0] * h1)
+                            (1 - w) * h0 + w * h1)
     polar = []
     for p in (pa, pb):
         c, r = body.section_at(p[:, 0])
@@ -446,6 +449,21 @@ def _curve_point_at_x(wing, body, side, fa, fb, pa, pb, X, max_iter=80):
     return pts, on_body & ~jump, ~jump
 
 
+def _onto_wing(wing, side, pts):
+    """Points (..., 3) inside the wing moved along its thickness axis onto the ``side``
+    surface at their span station and chord fraction; others unchanged."""
+    shape = pts.shape[:-1]
+    p = pts.reshape(-1, 3).copy()
+    span, frac = _fraction(wing, p)
+    a_t = wing.thickness_axis
+    f = np.clip(frac, 0.0, 1.0)
+    lo = wing.point(span, f, "lower", extrapolate=True)[:, a_t]
+    up = wing.point(span, f, "upper", extrapolate=True)[:, a_t]
+    inside = (frac > 0) & (frac < 1) & (p[:, a_t] > lo) & (p[:, a_t] < up)
+    p[:, a_t] = np.where(inside, lo if side == "lower" else up, p[:, a_t])
+    return p.reshape(shape + (3,))
+
+
 def _outside(wing, body, pts):
     """Whether points (..., 3) lie outside the body and outside the wing (extended inboard).
 
@@ -465,24 +483,21 @@ def _outside(wing, body, pts):
 
 
 def _section_coordinates(body, pts):
-    """(surface parameter, signed distance) of points (..., 3) off an arbitrary section."""
+    """Points (..., 3) off an arbitrary section as (surface parameter (...) of their nearest
+    point on it, their offset (..., 2) in y, z from that point)."""
     flat = np.asarray(pts, float).reshape(-1, 3)
     shape = np.shape(pts)[:-1]
-    return (body.parameter_of(flat).reshape(shape),
-            body.signed_distance(flat).reshape(shape))
+    s = body.parameter_of(flat)
+    foot = body.point(flat[:, 0], s)
+    return s.reshape(shape), (flat - foot)[:, 1:].reshape(shape + (2,))
 
 
-def _off_section(body, x, s, h):
-    """Points at distance h (...) off an arbitrary section at (x, s), along its normal in
-    the plane x = const (at a vertex, the bisector of its two pieces' normals)."""
-    from .fillet.section import PolylineFrame
-
-    x, s, h = np.broadcast_arrays(*(np.asarray(v, float) for v in (x, s, h)))
-    frame = PolylineFrame(body)
-    xf, sf = x.ravel(), s.ravel()
-    n = frame.normal2(xf, sf, np.ones(xf.size)) + frame.normal2(xf, sf, -np.ones(xf.size))
-    n /= np.maximum(np.linalg.norm(n, axis=1), 1e-300)[:, None]
-    return body.point(x, s) + h[..., None] * n.reshape(x.shape + (3,))
+def _off_section(body, x, s, offset):
+    """The inverse of :func:`_section_coordinates`: the section point at (x, s) plus the
+    offset (exact for the points it was taken from, and linear between them)."""
+    p = body.point(x, s)
+    p[..., 1:] += offset
+    return p
 
 
 def _radial(body, pts):
