@@ -282,6 +282,23 @@ def planar_arcs_at(wing, body, lines, ends, X):
                        (1 - wb) * rho[sb] + wb * rho[sb + 1], 0.0)
     near = np.where(okb[:, None], (1 - wb)[:, None] * E[sb] + wb[:, None] * E[sb + 1], E)
     arc, _, th_arc, _, found = _planar_arcs(wing, body, lines.side, X, rho_new, near, n)
+    # Where the wing's section by x = X curves faster than 1 / rho (a leading edge cut at a
+    # shallow angle) the arc would enter the wing: the radius is halved there until not.
+    from .fillet.cubic import _wing_depth
+
+    tol = 1e-10 * max(float(body.length), 1.0)
+    deep = found & (_wing_depth(wing, arc) > tol).any(axis=1)
+    for _ in range(12):
+        if not deep.any():
+            break
+        rho_new = np.where(deep, 0.5 * rho_new, rho_new)
+        again = _planar_arcs(wing, body, lines.side, X, rho_new, near, n)
+        arc = np.where(deep[:, None, None], again[0], arc)
+        th_arc = np.where(deep, again[2], th_arc)
+        found = np.where(deep, again[4], found)
+        deep = deep & found & (_wing_depth(wing, arc) > tol).any(axis=1)
+    if deep.any():
+        found = found & ~deep
     out[found], theta[found] = arc[found], th_arc[found]
     blend[found] = ((1 - wb) * lines.blend[sb] + wb * lines.blend[sb + 1])[found]
     for i in np.flatnonzero((rho_new > 0) & ~found):
