@@ -199,25 +199,9 @@ def test_fillets_on_an_arbitrary_section_fuselage(fillet, blocks):
             assert np.abs(body.signed_distance(geo.networks[name])).max() < 1e-9 * body.length
 
 
-@pytest.mark.parametrize("fillet", ["cubic", "circular"])
-@pytest.mark.parametrize("keep_area", [False, True])
-def test_single_network_with_fillets_on_an_arbitrary_section_fuselage(fillet, keep_area):
-    """The single fuselage network re-interpolates the lower lines at the upper x on an
-    arbitrary section too (in its surface parameter and distance off it); circular arcs are
-    rebuilt in those planes: every point of a line at one x."""
-    cfg = squashed(example())
-    geo = jc.complete(cfg, fillet, keep_area, single_network=True)
-    body = geo.configuration["body"]
-    fu, fl = geo.fillets["fillet upper"], geo.fillets["fillet lower"]
-    np.testing.assert_array_equal(fl[:, 0, 0], fu[:, 0, 0])
-    if fillet == "circular":
-        for f in (fu, fl):
-            assert np.all(f[..., 0] == f[:, :1, 0])
-    for f in (fu, fl):
-        assert np.isfinite(f).all()
-        assert np.abs(body.signed_distance(f[:, 0])).max() < 1e-9 * body.length
-        assert body.signed_distance(f.reshape(-1, 3)).min() > -1e-9 * body.length
-    assert max(seam_gaps(geo)) < 1e-12
+def test_the_single_network_with_a_fillet_on_an_arbitrary_section_fuselage_is_refused():
+    with pytest.raises(jc.GeometryError, match="use blocks=4 or 6"):
+        jc.complete(squashed(example()), "cubic", single_network=True)
 
 
 @pytest.mark.parametrize("fillet", ["cubic", "circular"])

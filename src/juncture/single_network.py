@@ -222,7 +222,7 @@ def interpolated_lines(wing, body, lines, ends, X):
         blended = np.where(bad[..., None], other, blended)
     # Where both dip into the wing (at a rounded leading edge, where the height above the
     # surface at a fixed x says little), the point is put on the wing's surface there.
-    blended = _onto_wing(wing, lines.side, blended)
+    blended = _onto_body(body, _onto_wing(wing, lines.side, blended))
     out = np.where(ok[:, None, None], blended, pts)
     start, theta, _ = _moved_starts(body, lines, X)
     out[:, 0] = start
@@ -478,6 +478,23 @@ def _onto_wing(wing, side, pts):
     up = wing.point(span, f, "upper", extrapolate=True)[:, a_t]
     inside = (frac > 0) & (frac < 1) & (p[:, a_t] > lo) & (p[:, a_t] < up)
     p[:, a_t] = np.where(inside, lo if side == "lower" else up, p[:, a_t])
+    return p.reshape(shape + (3,))
+
+
+def _onto_body(body, pts):
+    """Points (..., 3) inside the body moved onto its surface in their plane x = const
+    (radially on a circular body, to the nearest point of an arbitrary section)."""
+    shape = pts.shape[:-1]
+    p = pts.reshape(-1, 3).copy()
+    inside = _radial(body, p) < 0
+    if inside.any():
+        q = p[inside]
+        if hasattr(body, "section_at"):
+            c = body.center_at(q[:, 0])
+            foot = body.point(q[:, 0], np.arctan2(q[:, 2] - c[:, 1], q[:, 1] - c[:, 0]))
+        else:
+            foot = body.point(q[:, 0], body.parameter_of(q))
+        p[inside] = foot
     return p.reshape(shape + (3,))
 
 

@@ -20,9 +20,7 @@ sections (polygons of 20001 surface points) plus the fillets have the deck's sec
 at every fillet station, and nowhere more than the deck's.
 """
 
-import re
 import warnings
-from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -285,41 +283,3 @@ def test_slow_cubic_fillets_on_arbitrary_fuselages(example, opts):
 @given(wing_body_decks(section="arbitrary"), st.floats(0.03, 0.3))
 def test_slow_circular_fillets_on_arbitrary_fuselages(example, rho):
     check_arbitrary_fillets(*example, kind="circular", opts={"rho": rho})
-
-
-def check_single_network(text, desc, fillet):
-    from tests.deckgen.references import fillet_depths
-
-    cfg = read_text(text)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        geo = jc.complete(cfg, fillet, single_network=True)
-    for name, net in geo.networks.items():
-        assert np.isfinite(net).all(), name
-    fu, fl = geo.fillets["fillet upper"], geo.fillets["fillet lower"]
-    # The lower line starts at the upper one's x, except where no lower fillet start lies
-    # at that x (the log names the line: it keeps its own start).
-    kept = [float(m.group(1)) for m in (re.search(r"no fillet start lies at x = (\S+)$", s)
-                                        for s in geo.log) if m]
-    moved = ~np.isclose(fu[:, 0, 0][:, None], np.array(kept)[None, :], rtol=1e-5,
-                        atol=0.0).any(axis=1)  # (the log prints 6 digits)
-    np.testing.assert_array_equal(fl[moved, 0, 0], fu[moved, 0, 0])
-    # The lines with a fillet (a line whose lofting line misses the fuselage is the point
-    # where it ends, juncture.misses; those are checked by the intersection tests).
-    live = {k: f[np.linalg.norm(f[:, -1] - f[:, 0], axis=1) > 0]
-            for k, f in geo.fillets.items()}
-    inside_body, inside_wing = fillet_depths(replace(geo, fillets=live), desc)
-    assert inside_body <= TOL and inside_wing <= TOL, (inside_body, inside_wing)
-
-
-@settings(max_examples=6, **FAST)
-@given(wing_body_decks(section="arbitrary"), st.sampled_from(["cubic", "circular"]))
-def test_single_network_with_fillets_on_arbitrary_fuselages(example, fillet):
-    check_single_network(*example, fillet)
-
-
-@pytest.mark.slow
-@settings(max_examples=80, **SLOW)
-@given(wing_body_decks(section="arbitrary"), st.sampled_from(["cubic", "circular"]))
-def test_slow_single_network_with_fillets_on_arbitrary_fuselages(example, fillet):
-    check_single_network(*example, fillet)
