@@ -21,8 +21,8 @@ import numpy as np
 
 from .errors import GeometryError, OptionError
 from .fillet.area import fillet_added_area
-from .fillet.area import keep_area as _keep_area
 from .fillet.circular import circular_fillet
+from .fillet.compensation import keep_area as _keep_area
 from .fillet.cubic import FilletLines, cubic_fillet
 from .geometry import Geometry
 from .intersect import intersect_body_both

@@ -4,7 +4,7 @@ TM-4406 shrinks a circular fuselage's radius where the fillets add area. An arbi
 section (the deck's J2 = +1 polylines) has no radius; here each section is scaled about its
 area centroid by k = r / r0, r0 = sqrt(A0 / pi) its equivalent radius, so that it keeps its
 shape and gives up exactly A0 (1 - k^2) = pi (r0^2 - r^2). Everything else is
-:class:`~juncture.fillet.area.BodyReduction`'s: the fillet stations (and the extra stations
+:class:`~juncture.fillet.redesign.BodyReduction`'s: the fillet stations (and the extra stations
 between them) added to the body, the removed area interpolated between them, the reduction
 of the equivalent radius solved per station with the perimeter the wing roots cover
 (``exposure``), never growing the body.
@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..model._sections import area_and_centroid
-from .area import BodyReduction
+from .redesign import BodyReduction
 
 __all__ = ["SectionReduction", "reduction_for", "root_exposure_rate"]
 
