@@ -245,3 +245,27 @@ def test_the_public_complete_is_the_function_whatever_was_imported_first():
 
     assert jc.complete is juncture.completion.complete and callable(jc.complete)
     assert jc.CompleteOptions is juncture.completion.CompleteOptions
+
+
+@pytest.mark.parametrize("fillet", ["cubic", "circular"])
+def test_single_network_lines_on_an_arbitrary_section_fuselage(fillet):
+    """What complete() refuses for now (above) is built underneath: on the squashed
+    transport the re-interpolated lines start at the upper x on the fuselage, circular arcs
+    lie in their planes x = X, and no point is inside the fuselage."""
+    from juncture.fillet import circular_fillet, cubic_fillet
+    from juncture.intersect import intersect_body_both
+    from juncture.single_network import reinterpolated
+
+    cfg = squashed(example())
+    wing, body = cfg["wing"], cfg["body"]
+    iu, il = intersect_body_both(wing, body)
+    make = (lambda i: circular_fillet(wing, body, i, 0.5)) if fillet == "circular" else \
+        (lambda i: cubic_fillet(wing, body, i, end="dy", end_value=1.0))
+    fu, fl, _ = reinterpolated(wing, body, make(iu), make(il), iu, il, fillet)
+    np.testing.assert_array_equal(fl.points[:, 0, 0], fu.points[:, 0, 0])
+    if fillet == "circular":
+        assert np.all(fl.points[..., 0] == fl.points[:, :1, 0])
+    for f in (fu, fl):
+        assert np.isfinite(f.points).all()
+        assert np.abs(body.signed_distance(f.points[:, 0])).max() < 1e-9 * body.length
+        assert body.signed_distance(f.points.reshape(-1, 3)).min() > -1e-9 * body.length

@@ -50,10 +50,8 @@ def section_frame(body):
     return CircleFrame(body) if isinstance(body, CircularBody) else PolylineFrame(body)
 
 
-class CircleFrame:
-    """A circular body's section (TM-4406's own geometry)."""
-
-    circular = True
+class _Frame:
+    """What both frames share: the body, its name and length."""
 
     def __init__(self, body):
         self.body = body
@@ -65,6 +63,12 @@ class CircleFrame:
     @property
     def length(self):
         return self.body.length
+
+
+class CircleFrame(_Frame):
+    """A circular body's section (TM-4406's own geometry)."""
+
+    circular = True
 
     def start(self, x, p, sign, phi):
         return p + sign * phi
@@ -122,21 +126,10 @@ class CircleFrame:
         return 0.5 * np.pi * sign
 
 
-class PolylineFrame:
+class PolylineFrame(_Frame):
     """An arbitrary-section body's polyline sections (past the paper: module docstring)."""
 
     circular = False
-
-    def __init__(self, body):
-        self.body = body
-
-    @property
-    def name(self):
-        return self.body.name
-
-    @property
-    def length(self):
-        return self.body.length
 
     def _piece(self, x, s, above):
         """End points (m, 2) of the polyline piece holding s at x: the piece above s where s
