@@ -428,9 +428,7 @@ def _curve_point_at_x(wing, body, side, fa, fb, pa, pb, X, max_iter=80):
         lines = wing.point(spans[None, :], c[:, None], side)
         # A dense scan, without the exact screening: near the jump the lines graze the
         # body, where proving that a line misses it is slow (and not needed here).
-        # (More iterations than the default: at a joint step of an arbitrary fuselage the
-        # error jumps, and regula falsi creeps up to the jump.)
-        cr = find_crossings(lines, error, u_low, max_iter=2000)
+        cr = find_crossings(lines, error, u_low)
         pc = np.where(cr.found[:, None], cr.points, polyline_points(lines, np.full(
             (len(c), 1), u_low))[:, 0])
         gc = pc[:, 0] - X[idx]

@@ -122,6 +122,7 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
     """Close brackets [a (outside, f > 0), b (inside, f <= 0)] by Illinois regula falsi."""
     m = len(a)
     side = np.zeros(m, int)
+    same = np.zeros(m, int)  # how many times in a row the same end was kept
     it = 0
     rows = None
     while act.any():
@@ -130,7 +131,12 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
             raise _not_converged(max_iter, np.flatnonzero(act) if rows is None else rows)
         with np.errstate(invalid="ignore", divide="ignore"):
             c = np.where(fb != fa, b - fb * (b - a) / (fb - fa), 0.5 * (a + b))
-        bad = ~np.isfinite(c) | ((c - a) * (c - b) > 0)
+        # Regula falsi creeps up to a jump of the error (one end barely moves, however often
+        # the other's value is halved): from the fourth step in a row on one side, bisection
+        # until the side changes; and wherever its point is an end of the bracket (a step
+        # below the rounding of u, the error at that end zero to rounding).
+        crawl = same >= 4
+        bad = ~np.isfinite(c) | ((c - a) * (c - b) > 0) | crawl | (c == a) | (c == b)
         c = np.where(bad, 0.5 * (a + b), c)
         fc = np.zeros(m)
         rows = np.flatnonzero(act)
@@ -143,7 +149,9 @@ def _illinois(lines, error, a, b, fa, fb, act, rtol, max_iter):
         b = np.where(act & ~left, c, b)
         fa = np.where(act, fa_new, fa)
         fb = np.where(act, fb_new, fb)
-        side = np.where(act, np.where(left, 1, -1), side)
+        new_side = np.where(left, 1, -1)
+        same = np.where(act & (new_side == side), same + 1, 0)
+        side = np.where(act, new_side, side)
         exact = act & (fc == 0.0)
         a = np.where(exact, c, a)
         b = np.where(exact, c, b)
