@@ -279,3 +279,19 @@ def test_every_option_set_on_a_generated_high_wing_deck():
         assert all(np.isfinite(n).all() for n in geo.networks.values())
         assert all(np.isfinite(f).all() for f in geo.fillets.values())
         assert max(seam_gaps(geo)) <= 1e-11 * desc["length"]
+
+
+def test_a_line_entering_only_through_a_joint_step_is_named():
+    """Known (issue 11): a lofting line that enters the fuselage only through the step face
+    of a repeated joint station is taken for a miss; its end on the plane of symmetry then
+    lies inside the fuselage, and the log says so (generated deck, fixed seed)."""
+    from tests.deckgen import deck_from_seed, read_text
+
+    text, _ = deck_from_seed(11228, (), section="arbitrary")
+    cfg = read_text(text)
+    geo = complete(cfg, None)
+    named = [s for s in geo.log if "enters body only where no surface is taken" in s]
+    assert len(named) == 1 and "lofting line 4" in named[0]
+    _, il = intersect_body_both(cfg["wing"], cfg["body"])
+    q = line_ends(cfg["wing"], cfg["body"], il).points[3]
+    assert cfg["body"].signed_distance(q[None])[0] < 0  # inside, as the log says

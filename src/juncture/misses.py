@@ -118,11 +118,22 @@ def line_ends(wing, body, inter):
         above = missed & (q[:, 2] >= body.center_at(q[:, 0])[:, 1])
         pts[missed], u[missed] = q[missed], u_q[missed]
         theta[missed] = np.where(above[missed], top, bottom)
+        # A line "missing" the body whose end on the plane of symmetry is inside it entered
+        # only where the search finds no surface (the step of a joint station repeated with
+        # another section, an open end): said, since that end is then wrong (issue 11).
+        size = 1e-9 * max(float(body.length), 1.0)
+        distance = body.radial_error if hasattr(body, "radial_error") else \
+            body.signed_distance
+        buried = missed & (distance(np.where(missed[:, None], q, 0.0)) < -size)
         for j in np.flatnonzero(missed):
             where = "over" if above[j] else "under"
             log.append(f"{inter.name}: lofting line {j + 1} passes {where} {body.name}; "
                        f"continued to the plane of symmetry at x = {q[j, 0]:.6g} "
                        "(meets its mirror image there)")
+        for j in np.flatnonzero(buried):
+            log.append(f"{inter.name}: lofting line {j + 1} enters {body.name} only where no "
+                       "surface is taken (a joint station's step, an open end): its end on "
+                       f"the plane of symmetry, x = {q[j, 0]:.6g}, lies inside {body.name}")
     return LineEnds(pts, theta, u, missed, above, tuple(log))
 
 
