@@ -284,10 +284,10 @@ def planar_arcs_at(wing, body, lines, ends, X):
     arc, _, th_arc, _, found = _planar_arcs(wing, body, lines.side, X, rho_new, near, n)
     # Where the wing's section by x = X curves faster than 1 / rho (a leading edge cut at a
     # shallow angle) the arc would enter the wing: the radius is halved there until not.
-    from .fillet.cubic import _wing_depth
+    from .fillet.clearance import tolerance, wing_depth
 
-    tol = 1e-10 * max(float(body.length), 1.0)
-    deep = found & (_wing_depth(wing, arc) > tol).any(axis=1)
+    tol = tolerance(body)
+    deep = found & (wing_depth(wing, arc) > tol).any(axis=1)
     for _ in range(12):
         if not deep.any():
             break
@@ -296,7 +296,7 @@ def planar_arcs_at(wing, body, lines, ends, X):
         arc = np.where(deep[:, None, None], again[0], arc)
         th_arc = np.where(deep, again[2], th_arc)
         found = np.where(deep, again[4], found)
-        deep = deep & found & (_wing_depth(wing, arc) > tol).any(axis=1)
+        deep = deep & found & (wing_depth(wing, arc) > tol).any(axis=1)
     if deep.any():
         found = found & ~deep
     out[found], theta[found] = arc[found], th_arc[found]

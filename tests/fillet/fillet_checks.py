@@ -10,6 +10,15 @@ thousands of points; crossings from an exact orientation predicate.
 from __future__ import annotations
 
 import numpy as np
+from hypothesis import HealthCheck, Phase
+
+#: Hypothesis settings of the generated-deck fillet tests: the fast profile derandomized,
+#: the slow one (``make test-all``) drawing afresh; and the wing height x root families.
+FAST = dict(deadline=None, derandomize=True, suppress_health_check=list(HealthCheck),
+            phases=(Phase.explicit, Phase.generate))
+SLOW = dict(deadline=None, suppress_health_check=list(HealthCheck),
+            phases=(Phase.explicit, Phase.reuse, Phase.generate))
+FAMILIES = [(h, r) for h in ("low", "mid", "high") for r in ("inside", "crossing", "outside")]
 
 
 def cubic_of(points):

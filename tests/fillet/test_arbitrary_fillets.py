@@ -24,7 +24,7 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import juncture as jc
@@ -32,13 +32,16 @@ from juncture.fillet import circular_fillet, cubic_fillet, wedge_area
 from juncture.intersect import intersect_body_both
 from juncture.model import ArbitraryBody
 from tests.deckgen import read_text, references, wing_body_decks
-from tests.fillet.fillet_checks import angle, crossing_pairs, dense, end_tangents
+from tests.fillet.fillet_checks import (
+    FAMILIES,
+    FAST,
+    SLOW,
+    angle,
+    crossing_pairs,
+    dense,
+    end_tangents,
+)
 
-FAST = dict(deadline=None, derandomize=True, suppress_health_check=list(HealthCheck),
-            phases=(Phase.explicit, Phase.generate))
-SLOW = dict(deadline=None, suppress_health_check=list(HealthCheck),
-            phases=(Phase.explicit, Phase.reuse, Phase.generate))
-FAMILIES = [(h, r) for h in ("low", "mid", "high") for r in ("inside", "crossing", "outside")]
 TOL = 1e-9  # relative to the fuselage length
 ANGLE = 1e-9  # rad
 

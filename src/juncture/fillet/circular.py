@@ -31,7 +31,7 @@ from ..intersect import BodyIntersection, find_crossings
 from ..intersect.rays import SurfaceBound
 from ..misses import ended_lines, line_ends
 from ..model import CircularBody
-from .cubic import _runs, _wing_depth
+from .clearance import line_runs, tolerance, wing_depth
 from .lines import FilletLines, blend_over
 
 __all__ = ["circular_fillet", "arcs"]
@@ -167,10 +167,6 @@ class _Solve:
         return pts, T, th
 
 
-def _tolerance(body):
-    return 1e-10 * max(float(body.length), 1.0)
-
-
 def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=None,
                     n_points=9, hint=None, blend_range=None, tangent="section"):
     """Circular-arc fillet lines of radius ``radius`` for one surface.
@@ -251,9 +247,9 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
         arcs_ = solve.arcs(idx, beta[idx], P, found, n_points)
         # A wing whose section by x = const curves towards the arc faster than 1 / rho (near
         # a leading edge) lets the arc enter it: there the radius is halved until it does not.
-        deep = found & (_wing_depth(wing, arcs_[0]) > _tolerance(body)).any(axis=1)
+        deep = found & (wing_depth(wing, arcs_[0]) > tolerance(body)).any(axis=1)
         if deep.any():
-            log.append(f"{wing.name} {side} fillet lines {_runs(idx[deep])}: radius reduced "
+            log.append(f"{wing.name} {side} fillet lines {line_runs(idx[deep])}: radius reduced "
                        "where the wing's section curves faster than the arc (it would enter "
                        "the wing)")
         for _ in range(12):
@@ -268,8 +264,8 @@ def circular_fillet(wing, body, inter: BodyIntersection, radius, blend_length=No
             for full, part in zip(arcs_, redo):
                 full[rows] = part
             deep = np.zeros_like(deep)
-            deep[rows] = again.found & (_wing_depth(wing, redo[0]) >
-                                        _tolerance(body)).any(axis=1)
+            deep[rows] = again.found & (wing_depth(wing, redo[0]) >
+                                        tolerance(body)).any(axis=1)
         ok = found & ~deep
         rows = idx[ok]
         pts[rows], start[rows], theta_b[rows] = arcs_[0][ok], arcs_[1][ok], arcs_[2][ok]

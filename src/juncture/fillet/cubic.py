@@ -88,6 +88,7 @@ import numpy as np
 
 from ..errors import GeometryError
 from ..intersect import BodyIntersection, polyline_points
+from .clearance import line_runs, tolerance, wing_depth
 from .endpoint import _end_coordinate, _line_direction, _segment
 from .lines import FilletLines, bezier, blend_factor, blend_over, hermite
 from .section import section_frame
@@ -194,23 +195,6 @@ def _ray_to_plane(origin, direction, normal, on_plane, scale):
     return np.where(gap <= 0, 0.0, np.where(rate > 0, out, far))
 
 
-def _wing_depth(wing, points):
-    """How deep points (..., 3) lie inside the wing (> 0 inside, lofting lines extended):
-    its surfaces at the points' span and chord fraction; -inf off the planform."""
-    span = points[..., wing.span_axis]
-    ends = wing.point(span[..., None], np.array([0.0, 1.0]), "upper", extrapolate=True)
-    x0, x1 = ends[..., 0, 0], ends[..., 1, 0]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        f = (points[..., 0] - x0) / (x1 - x0)
-    inside = np.isfinite(f) & (f > 0) & (f < 1)
-    fc = np.where(inside, f, 0.5)
-    a = wing.thickness_axis
-    up = wing.point(span, fc, "upper", extrapolate=True)[..., a]
-    lo = wing.point(span, fc, "lower", extrapolate=True)[..., a]
-    t = points[..., a]
-    return np.where(inside, np.minimum(t - lo, up - t), -np.inf)
-
-
 def _clear(wing, side, body, control, tol, corner, n=17):
     """Lines (m,) whose cubic stays out of the body and the wing: sampled densely (also in
     projection on x = x_I, against the body circle and the straight wing line from E back to
@@ -219,7 +203,7 @@ def _clear(wing, side, body, control, tol, corner, n=17):
     the body's normal with the cone's slope, unnormalised)."""
     p = bezier(control, np.linspace(0.0, 1.0, n))
     out_body = body.distance(p.reshape(-1, 3)).reshape(p.shape[:2]) >= -tol
-    out_wing = _wing_depth(wing, p) <= tol
+    out_wing = wing_depth(wing, p) <= tol
     B = control[:, 0]
     flat = body.plane_gap(p, B[:, 0])
     line = control[:, 3, 1:] - corner[:, 1:]
@@ -245,18 +229,6 @@ def _leg_share(along, rate, leg):
 
 def _cross(a, b):
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
-
-
-def _runs(rows):
-    """'3, 5-8' from 0-based row indices (1-based in the text)."""
-    rows = [int(j) + 1 for j in rows]
-    out, start = [], None
-    for a, b in zip(rows, rows[1:] + [None]):
-        start = a if start is None else start
-        if b != a + 1:
-            out.append(f"{start}" if start == a else f"{start}-{a}")
-            start = None
-    return ", ".join(out)
 
 
 def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
@@ -401,12 +373,12 @@ def _line_starts(wing, body, inter, lines, end, end_value, missed_lines, upper_r
         ends = line_ends(wing, body.body, inter)
         I[plane_miss], theta_i[plane_miss] = ends.points[plane_miss], ends.theta[plane_miss]
         u_i[plane_miss] = u_full[plane_miss] = ends.u[plane_miss]
-        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(plane_miss))}: the "
+        log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(plane_miss))}: the "
                    f"lofting line misses {body.name}; no fillet there (the line ends on the "
                    "plane of symmetry; TM-4406's start at the body's bottom would lie inside "
                    "the wing)")
     if held.any():
-        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(held))}: end point "
+        log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(held))}: end point "
                    "held at the next section where the lofting line bends (the fillet ends on "
                    "the straight part of the line that holds the intersection)")
     return {"I": I, "theta_i": theta_i, "u_i": u_i, "u_full": u_full, "k": k,
@@ -439,13 +411,13 @@ def _start_angles(wing, body, side, sign, lines, I, theta_i, u_full, k, found, s
     reduced = found & (scale > 0) & (phi < theta_u)
     if reduced.any():
         worst = int(np.argmin(np.where(reduced, phi, np.inf)))
-        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(reduced))}: theta_u "
+        log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(reduced))}: theta_u "
                    f"reduced (to {np.degrees(phi[worst]):.3g} deg on line {worst + 1}, where "
                    f"body and wing meet at {np.degrees(phi_max[worst]):.3g} deg) so that the "
                    "fillet stays between body and wing")
     tight = found & (scale > 0) & (phi_max < np.radians(1.0))
     if tight.any():
-        log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(tight))}: the wing "
+        log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(tight))}: the wing "
                    f"is nearly tangent to {body.name} (less than 1 deg between them): no room "
                    "for a fillet there, the line is left nearly sharp")
     return phi, k_full
@@ -540,10 +512,6 @@ class _Construction:
 _SAMPLES = 33
 
 
-def _tolerance(body):
-    return 1e-10 * max(float(body.length), 1.0)
-
-
 def _safety_net(con, wing, side, body, I, check, phi, log):
     """phi, reduced (bisection) on the lines whose curve enters the body or the wing.
 
@@ -552,7 +520,7 @@ def _safety_net(con, wing, side, body, I, check, phi, log):
     twisted wing, far end points), the curve is checked against the surfaces themselves and
     B brought closer to I on the lines that enter either.
     """
-    tol = _tolerance(body)
+    tol = tolerance(body)
 
     def clear(ctrl, rows):
         out = np.ones(con.m, bool)
@@ -568,7 +536,7 @@ def _safety_net(con, wing, side, body, I, check, phi, log):
         mid = 0.5 * (lo + hi)
         ok = clear(con.finish(con.geometry(np.where(bad, mid * phi, phi)))[4], bad)
         lo, hi = np.where(bad & ok, mid, lo), np.where(bad & ~ok, mid, hi)
-    log.append(f"{wing.name} {side} fillet lines {_runs(np.flatnonzero(bad))}: theta_u "
+    log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(bad))}: theta_u "
                "reduced further where the curved surfaces leave less room than their "
                "tangent planes")
     return np.where(bad, lo * phi, phi)
@@ -585,7 +553,7 @@ def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1):
     grid = np.arange(1, 9) / 8.0
     rows = np.flatnonzero(reach)
     cand = c0[rows, None] + grid[None, :, None, None] * (c1 - c0)[rows, None]
-    ok = _clear(wing, side, body, cand.reshape(-1, 4, 3), _tolerance(body),
+    ok = _clear(wing, side, body, cand.reshape(-1, 4, 3), tolerance(body),
                 np.repeat(I[rows], grid.size, axis=0), _SAMPLES).reshape(rows.size, -1)
     # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
     upto = np.cumprod(ok, axis=1).sum(axis=1)
