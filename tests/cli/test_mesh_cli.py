@@ -22,8 +22,22 @@ def test_the_sample_wing_body_is_written_closed(tmp_path, capsys, fillet):
     assert len(msh.cells_dict["triangle"]) == len(tm.faces)
 
 
-def test_an_airplane_whose_seams_do_not_close_gets_no_mesh_and_one_line(tmp_path, capsys):
+def test_the_bundled_airplane_is_written_closed(tmp_path, capsys):
+    import trimesh
+
+    assert main(["mesh", str(EXAMPLE_DECK), "-o", str(tmp_path), "--format", "stl"]) == 0
+    out = capsys.readouterr().out
+    assert "0 intersecting triangle pairs" in out
+    tm = trimesh.load(tmp_path / "mesh.stl")
+    assert tm.is_watertight and tm.is_winding_consistent and tm.volume > 0
+
+
+def test_a_surface_that_fails_a_check_gets_no_mesh_and_one_line(tmp_path, capsys, monkeypatch):
+    """With the footprints of the pylons left uncut, they cross the wing's lower surface."""
+    from juncture.surface import assemble as assembly
+
+    monkeypatch.setattr(assembly, "_imprint_all", lambda g, v, t, c, s, n: (t, c, s))
     assert main(["mesh", str(EXAMPLE_DECK), "-o", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "not closed, so no mesh was written" in err[0]
+    assert len(err) == 1 and "so no mesh was written" in err[0]
     assert not (tmp_path / "out").exists()

@@ -238,12 +238,18 @@ class WingLike:
         fr, kk = f.ravel(), k.ravel()
         i = np.minimum(np.maximum(np.searchsorted(t, fr, side="right") - 1, 0), t.size - 2)
         h = (fr - t[i])
+        # At the trailing edge the section's own ordinate, not the last cubic's round-off:
+        # a sharp edge is then the same point on both sides, bit for bit.
+        te = fr == t[-1]
         pts = []
         for kk_i in (kk, kk + 1):
             c3, c2, c1, c0 = coefs[:, i, kk_i]
             p = self.le[kk_i].copy()
             p[:, 0] += self.chord[kk_i] * fr
-            p[:, self.thickness_axis] += ((c3 * h + c2) * h + c1) * h + c0
+            off = ((c3 * h + c2) * h + c1) * h + c0
+            if te.any():
+                off = np.where(te, self._offsets(side)[kk_i, -1], off)
+            p[:, self.thickness_axis] += off
             pts.append(p)
         w = lam.ravel()[:, None]
         return ((1.0 - w) * pts[0] + w * pts[1]).reshape(s.shape + (3,))

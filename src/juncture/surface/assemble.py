@@ -23,6 +23,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .seams import split_seams
+
 __all__ = ["SurfaceMesh", "assemble", "mesh", "boundary_loops", "cap_polygon", "strip_cap"]
 
 
@@ -288,6 +290,24 @@ def _runs_with(tri, loop):
     return len(edges & used) > len(edges) // 2
 
 
+def _imprint_all(geometry, vertices, triangles, component, surface, components):
+    """Every footprint (:mod:`juncture.surface.imprint`) cut into its host."""
+    from .imprint import footprints, imprint
+
+    for host, loop in footprints(geometry, vertices, triangles, component, components):
+        cut = imprint(vertices, triangles, component == host, loop)
+        if cut is None:
+            continue
+        removed, new = cut
+        keep = np.ones(len(triangles), bool)
+        keep[removed] = False
+        surf = np.bincount(surface[removed]).argmax()
+        triangles = np.concatenate([triangles[keep], new])
+        component = np.concatenate([component[keep], np.full(len(new), host)])
+        surface = np.concatenate([surface[keep], np.full(len(new), surf)])
+    return triangles, component, surface
+
+
 def assemble(geometry, mirror=True, cap=True):
     """The networks of ``geometry`` as one :class:`SurfaceMesh` (see the module docstring).
 
@@ -319,7 +339,14 @@ def assemble(geometry, mirror=True, cap=True):
     keep = (triangles[:, 0] != triangles[:, 1]) & (triangles[:, 1] != triangles[:, 2]) & \
         (triangles[:, 2] != triangles[:, 0])
     triangles, component, surface = triangles[keep], component[keep], surface[keep]
+    for _ in range(3):  # a triangle with two seam edges gets its second fan next pass
+        triangles, parent = split_seams(vertices, triangles, component)
+        if len(parent) == len(component) and np.array_equal(parent, np.arange(len(parent))):
+            break
+        component, surface = component[parent], surface[parent]
     surfaces = tuple(nets)
+    triangles, component, surface = _imprint_all(geometry, vertices, triangles, component,
+                                                 surface, components)
     open_loops = ()
     if cap:
         size = float(np.ptp(vertices, axis=0).max()) or 1.0

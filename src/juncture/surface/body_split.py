@@ -50,7 +50,7 @@ def boundary_from_points(body, points, name=""):
     from ..intersect.body import _body_angle
 
     ok = np.all(np.isfinite(points), axis=1)
-    return Boundary(points[ok, 0], _body_angle(body, points[ok]), name)
+    return Boundary(points[ok, 0], _body_angle(body, points[ok]), name, points[ok])
 
 
 def bounding_curve(x, regions, x_nose, x_end, side=0.0):
@@ -107,6 +107,8 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     lo = body.point(xl[:, None], bottom + t_l[None, :] * (th_l - bottom)[:, None])
     _end_at_points(up, xu, upper_regions, top_value)
     _end_at_points(lo, xl, lower_regions, bottom)
+    for fin in fins:  # rows at a fin's stations start exactly at its points
+        _end_at_points(up[:, ::-1], xu, [fin], None)
     radial = radial_outward(body)
     return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
 
@@ -134,15 +136,18 @@ def _kept(xg, regions, far):
 
 
 def _end_at_points(net, xs, regions, far):
-    """Rows at a region's stations end at its points; empty rows are all that point."""
+    """Rows at a region's stations end at its points; empty rows (at angle ``far``; none
+    when it is None) are all that point."""
     for reg in regions:
         if reg.points is None:
             continue
         rows = np.searchsorted(xs, reg.x)
         ok = (rows < xs.size) & (xs[np.minimum(rows, xs.size - 1)] == reg.x)
-        rows, pts, e = rows[ok], reg.points[ok], _empty(reg, far)[ok]
+        rows, pts = rows[ok], reg.points[ok]
         net[rows, -1] = pts
-        net[rows[e]] = pts[e][:, None, :]
+        if far is not None:
+            e = _empty(reg, far)[ok]
+            net[rows[e]] = pts[e][:, None, :]
 
 
 def seam_gap(points, net):

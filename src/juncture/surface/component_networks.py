@@ -45,16 +45,29 @@ def orient_winglike(wing, side, pts):
     return pts if sign * natural_out > 0 else pts[:, ::-1]
 
 
-def _at_root(wing, inter, other=None):
-    """Whether ``inter`` trims ``wing``'s root end (its points nearer the root than the tip).
-
-    A line with no point on this side is placed by the other side's line of the same pair.
-    """
+def _mean_u(inter, other=None):
+    """Mean span parameter of an intersection line's points (the other side's line of the
+    same pair where this one has none); NaN where neither has a point."""
     u = np.asarray(inter.u, float)
     if not np.isfinite(u).any() and other is not None:
         u = np.asarray(other.u, float)
     u = u[np.isfinite(u)]
-    return bool(u.size == 0 or np.mean(u) < 0.5 * (wing.n_sections - 1))
+    return float(np.mean(u)) if u.size else np.nan
+
+
+def _at_root(wing, inters, others):
+    """For each line of ``inters``, whether it trims ``wing``'s root end.
+
+    One line: when its points are nearer the root than the tip. Several (a pylon between
+    its nacelle and the wing): the line nearest the root trims the root and the others the
+    tip, however near the root the wing's line lies.
+    """
+    u = np.array([_mean_u(inter, others[i] if i < len(others) else None)
+                  for i, inter in enumerate(inters)])
+    u = np.where(np.isfinite(u), u, 0.0)
+    if len(u) < 2:
+        return [bool(v < 0.5 * (wing.n_sections - 1)) for v in u]
+    return [bool(i == int(np.argmin(u))) for i in range(len(u))]
 
 
 def _end_line(wing, side, inter, at_root, log):
@@ -92,8 +105,7 @@ def trimmed_networks(wing, side_inters, log):
         sec = wing.section_points(side)  # (n_sections, n_stations, 3)
         first, last = None, None
         lo, hi = -np.inf, np.inf
-        for i, inter in enumerate(inters):
-            at_root = _at_root(wing, inter, others[i] if i < len(others) else None)
+        for inter, at_root in zip(inters, _at_root(wing, inters, others)):
             pts, u = _end_line(wing, side, inter, at_root, log)
             if at_root:
                 first, lo = pts, max(lo, float(np.max(u)))
@@ -122,12 +134,13 @@ def nacelle_network(pod, pylon_inters, n_points=None):
     Returns
     -------
     (n_lines, n_points, 3) float
-        Cross-sections at the pod stations and at the outboard intersection points' x; where a
-        pylon sits, each runs from its outboard line round the bottom to its inboard line.
+        Cross-sections at the pod stations and at the intersection points' x; where a pylon
+        sits, each runs from its inboard line round the bottom to its outboard line, ending
+        exactly at the intersection points at their own stations.
     """
     n = int(n_points or 37)
     xg = pod.x_global
-    spans = []
+    spans, ends = [], []
     for out_i, in_i in pylon_inters:
         ok_o, ok_i = out_i.found, in_i.found
         if not ok_o.any() or not ok_i.any():
@@ -140,7 +153,8 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         order = np.argsort(in_i.points[ok_i, 0])
         th_i_at = np.interp(xo, in_i.points[ok_i, 0][order], np.unwrap(th_i[order]))
         spans.append((xo, th_o, th_i_at))
-    xs = np.union1d(xg, np.concatenate([s[0] for s in spans])) if spans else xg
+        ends.append((out_i.points[ok_o], in_i.points[ok_i]))
+    xs = np.union1d(xg, np.concatenate([p[:, 0] for e in ends for p in e])) if spans else xg
     # Full circles start and end at the top, so the arcs under a pylon continue them smoothly.
     lo = np.full(xs.size, 0.5 * np.pi)
     hi = np.full(xs.size, 2.5 * np.pi)
@@ -153,7 +167,15 @@ def nacelle_network(pod, pylon_inters, n_points=None):
             2 * np.pi
     t = np.linspace(0.0, 1.0, n)
     theta = lo[:, None] + t[None, :] * (hi - lo)[:, None]
-    return pod.point(xs[:, None], theta)
+    net = pod.point(xs[:, None], theta)
+    # Where a station is an intersection point's x, its arc ends exactly at that point, so
+    # the pylon's root line and the pod share these points bit for bit.
+    for outboard, inboard in ends:
+        lo_x, hi_x = outboard[:, 0].min(), outboard[:, 0].max()
+        for col, pts in ((-1, outboard), (0, inboard)):
+            pts = pts[(pts[:, 0] >= lo_x) & (pts[:, 0] <= hi_x)]  # where the arc is open
+            net[np.searchsorted(xs, pts[:, 0]), col] = pts
+    return net
 
 
 def trace_curve(wing, side, line):
@@ -189,7 +211,8 @@ def add_trace_curves(wing, nets, traces):
     """Insert traced curves into the wing's networks (n-lines = sections, in span order).
 
     ``traces`` is a list of (side, curve (n_stations, 3)); ``nets`` maps "wing upper"/"wing
-    lower" to networks whose n-lines are spanwise stations (first n-line at the body).
+    lower" to networks whose n-lines are spanwise stations, the body-side n-line first or
+    (for a network oriented tip to root) last; the order and orientation are kept.
     """
     out = dict(nets)
     for side in ("upper", "lower"):
@@ -200,9 +223,12 @@ def add_trace_curves(wing, nets, traces):
         net = out[name]
         natural = np.allclose(net[:, 0, 0], np.min(net[:, :, 0], axis=1))  # points LE -> TE?
         add = [c if natural else c[::-1] for c in curves]
-        lines = np.concatenate([net, np.stack(add)], axis=0)
-        span = lines[:, :, 1].mean(axis=1)
-        keep_first = lines[:1]  # the body-side line stays first
-        rest = lines[1:][np.argsort(span[1:], kind="stable")]
-        out[name] = np.concatenate([keep_first, rest], axis=0)
+        # An oriented network may run tip to root (orient() reversed it): the body-side line
+        # is then its last, and the result is reversed back so the normals stay outward.
+        backward = net[0, :, 1].mean() > net[-1, :, 1].mean()
+        base = net[::-1] if backward else net
+        span = np.concatenate([base[1:], np.stack(add)], axis=0)
+        rest = span[np.argsort(span[:, :, 1].mean(axis=1), kind="stable")]
+        merged = np.concatenate([base[:1], rest], axis=0)  # the body-side line stays first
+        out[name] = merged[::-1] if backward else merged
     return out

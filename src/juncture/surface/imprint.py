@@ -1,0 +1,220 @@
+"""A component's footprint cut into the surface it stands on.
+
+A pylon ends on the wing's lower surface, a fin or a tail on the fuselage: juncture trims the
+standing component at its intersection line, so its networks end in a closed loop of exact
+points of the other surface (the *host*). Where the layout has not already opened the host
+there (the fuselage blocks do it for fins and tails, the nacelle for its pylon), the host's
+triangles pass under the footprint. :func:`imprint` removes them and re-triangulates the
+region between the loop and the untouched triangles around it with a constrained Delaunay
+triangulation (PythonCDT, MPL-2.0) in the plane the host faces there: the loop's edges and
+the region's border are constraints, the host's own vertices in between are kept where they
+are not crowding the loop. No point is created or moved, so every vertex stays an exact
+point of its surface and the seam closes by vertex ids.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["imprint", "footprints"]
+
+#: Host vertices nearer the loop than this share of the local edge length are left out.
+CROWD = 0.4
+
+
+def _unit(v):
+    n = np.linalg.norm(v, axis=-1, keepdims=True)
+    return v / np.where(n > 0, n, 1.0)
+
+
+def _frame(n):
+    """(2, 3) in-plane axes e1, e2 with e1 x e2 = n."""
+    e1 = np.cross(n, np.eye(3)[int(np.argmin(np.abs(n)))])
+    e1 /= np.linalg.norm(e1)
+    return np.stack([e1, np.cross(n, e1)])
+
+
+def _inside(pts, poly):
+    """(k,) whether 2-D points lie inside the closed polygon (crossing number)."""
+    a, b = poly, np.roll(poly, -1, axis=0)
+    x, y = pts[:, None, 0], pts[:, None, 1]
+    cross = (a[None, :, 1] > y) != (b[None, :, 1] > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xi = a[None, :, 0] + (y - a[None, :, 1]) * (b[None, :, 0] - a[None, :, 0]) / (
+            b[None, :, 1] - a[None, :, 1])
+    return (cross & (x < xi)).sum(axis=1) % 2 == 1
+
+
+def _distance(pts, poly):
+    """(k,) distance of 2-D points from the closed polygon's edges."""
+    a, d = poly, np.roll(poly, -1, axis=0) - poly
+    rel = pts[:, None, :] - a[None]
+    t = np.clip((rel * d[None]).sum(-1) / np.maximum((d * d).sum(-1), 1e-300), 0.0, 1.0)
+    return np.linalg.norm(rel - t[..., None] * d[None], axis=-1).min(axis=1)
+
+
+def _simple(poly):
+    """Whether a closed 2-D polygon has no two non-adjacent edges that cross."""
+    a, b = poly, np.roll(poly, -1, axis=0)
+    k = len(poly)
+
+    def orient(p, q, r):
+        return np.sign((q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1])
+                       - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0]))
+    i, j = np.triu_indices(k, 2)
+    keep = ~((i == 0) & (j == k - 1))
+    i, j = i[keep], j[keep]
+    d1, d2 = orient(a[i], b[i], a[j]), orient(a[i], b[i], b[j])
+    d3, d4 = orient(a[j], b[j], a[i]), orient(a[j], b[j], b[i])
+    return not np.any((d1 * d2 < 0) & (d3 * d4 < 0))
+
+
+def _region(vertices, triangles, cand, uv, loop2, margin):
+    """Candidate triangles (ids into ``cand``) whose projection meets the loop's polygon or
+    comes within ``margin`` of it."""
+    t2 = uv[triangles[cand]]                                    # (c, 3, 2)
+    corners = t2.reshape(-1, 2)
+    hit = _inside(corners, loop2) | (_distance(corners, loop2) <= margin)
+    hit = hit.reshape(-1, 3).any(axis=1)
+    # A loop that lies inside one large triangle.
+    u, v = t2[:, 1] - t2[:, 0], t2[:, 2] - t2[:, 0]
+    w = loop2.mean(axis=0) - t2[:, 0]
+    det = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lam1 = (w[:, 0] * v[:, 1] - w[:, 1] * v[:, 0]) / det
+        lam2 = (u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]) / det
+    hit |= (lam1 >= 0) & (lam2 >= 0) & (lam1 + lam2 <= 1)
+    return np.flatnonzero(hit)
+
+
+def _border(triangles):
+    """The single boundary loop of a set of triangles, or None (none, or several)."""
+    from .assemble import boundary_loops
+
+    loops = boundary_loops(triangles)
+    return loops[0] if len(loops) == 1 else None
+
+
+def imprint(vertices, triangles, host, loop):
+    """Cut a closed loop of exact points into the host surface.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    triangles : (m, 3) int
+    host : (m,) bool
+        The host component's triangles.
+    loop : (k,) int
+        Vertex ids of the footprint, in the order the standing component's triangles use
+        them.
+
+    Returns
+    -------
+    (removed, new) : ((r,) int, (s, 3) int), or None
+        Host triangles to remove and the triangles that replace them (oriented as the host),
+        or None where the footprint cannot be cut in one plane (a loop that folds over in
+        projection, a region with a hole, a triangulation that would fold in space).
+    """
+    import pythoncdt as cdt
+    from scipy.spatial import cKDTree
+
+    loop = np.asarray(loop)
+    p = vertices[loop]
+    hid = np.flatnonzero(host)
+    if len(loop) < 3 or not len(hid):
+        return None
+    corner = vertices[triangles[hid]]
+    normal = np.cross(corner[:, 1] - corner[:, 0], corner[:, 2] - corner[:, 0])
+    cent = corner.mean(axis=1)
+    _, near = cKDTree(cent).query(p, k=min(3, len(hid)))
+    n = _unit(normal[np.unique(near)].sum(axis=0))
+    edges = np.linalg.norm(corner - np.roll(corner, 1, axis=1), axis=2)
+    h = float(np.median(edges[np.unique(near)]))
+    size = float(np.linalg.norm(p - p.mean(axis=0), axis=1).max())
+    axes = _frame(n)
+    origin = p.mean(axis=0)
+    uv = (vertices - origin) @ axes.T
+    loop2 = uv[loop]
+    if not _simple(loop2):
+        return None
+    front = (_unit(normal) @ n > 0.25) & (np.linalg.norm(cent - origin, axis=1) <= 2.0 * (size + h))
+    cand = hid[front]
+    if not len(cand):
+        return None
+    region = cand[_region(vertices, triangles, cand, uv, loop2, h)]
+    border = _border(triangles[region])
+    if border is None:
+        return None
+    # Fill what the border encloses (host triangles the margin test left out), once.
+    inner = cand[_inside((cent[front] - origin) @ axes.T, uv[border])]
+    region = np.union1d(region, inner)
+    border = _border(triangles[region])
+    if border is None or np.isin(loop, border).any():
+        return None
+    used = np.unique(triangles[region])
+    interior = np.setdiff1d(used, border)
+    interior = interior[~_inside(uv[interior], loop2)
+                        & (_distance(uv[interior], loop2) > CROWD * h)]
+    ids = np.concatenate([border, interior, loop])
+    pts2 = uv[ids]
+    local = {int(v): i for i, v in enumerate(ids)}
+    if len(local) != len(ids):
+        return None
+    nb, nl = len(border), len(loop)
+    cons = [(local[int(border[i])], local[int(border[(i + 1) % nb])]) for i in range(nb)]
+    cons += [(local[int(loop[i])], local[int(loop[(i + 1) % nl])]) for i in range(nl)]
+    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
+                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
+    try:
+        tri.insert_vertices(np.ascontiguousarray(pts2))
+        tri.insert_edges(np.array(cons, np.uint32))
+        tri.erase_outer_triangles_and_holes()
+    except (RuntimeError, ValueError):
+        return None
+    if tri.vertices_count() != len(ids):
+        return None
+    new = ids[tri.triangles_array()["vertices"].astype(np.int64)]
+    q = vertices[new]
+    up = np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n
+    if np.any(up <= 0.0):
+        return None
+    return region, new
+
+
+def footprints(geometry, vertices, triangles, component, components):
+    """Loops to imprint: ``[(host component index, loop)]`` for every open boundary loop of a
+    component made (mostly) of its intersection points with another component.
+
+    The intersection lines ``"a/b side"`` of ``geometry`` name the standing component ``a``
+    and the host ``b``; their mirror images count for the image half.
+    """
+    from .assemble import boundary_loops
+
+    keys = {}
+    v = np.ascontiguousarray(vertices + 0.0)
+    for k, row in enumerate(v.view(np.dtype((np.void, 24))).ravel()):
+        keys[row.tobytes()] = k
+    on = {}
+    for name, pts in geometry.intersections.items():
+        a, rest = name.split("/", 1)
+        b = rest.rsplit(" ", 1)[0]
+        for q in (pts, pts * np.array([1.0, -1.0, 1.0])):
+            q = np.ascontiguousarray(np.asarray(q, float) + 0.0)
+            for row in q[np.all(np.isfinite(q), axis=1)]:
+                k = keys.get(row.tobytes())
+                if k is not None:
+                    on.setdefault(k, set()).add((a, b))
+    out = []
+    vertex_comp = {}
+    for t, c in zip(triangles.tolist(), component.tolist()):
+        for x in t:
+            vertex_comp.setdefault(x, set()).add(components[c])
+    for loop in boundary_loops(triangles):
+        pairs = [on.get(int(x), set()) for x in loop]
+        owners = set().union(*(vertex_comp[int(x)] for x in loop))
+        for a, b in set().union(*pairs):
+            share = np.mean([(a, b) in s for s in pairs])
+            if share >= 0.5 and owners == {a} and b in components:
+                out.append((components.index(b), loop))
+                break
+    return out

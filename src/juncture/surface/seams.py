@@ -1,0 +1,119 @@
+"""Seams whose two sides carry different points of the same line, made conformal.
+
+A layout's networks meet along intersection lines, but each side carries the points its own
+grid gives: the wing's root line has a point at each of the wing's chord stations, the body
+block beside it a point at each body station as well. Assembled by shared vertex ids, such a
+seam leaves a thin open loop: the two chains of points between the shared ones. Each is an
+exact point of the same line, so nothing is moved and nothing is welded: every boundary
+edge ``a -> b`` of one component gets the other component's points that lie between ``a``
+and ``b`` on the line (within a thin lens about the edge), its triangle split into a fan
+through them. Both sides then carry every point of the line and the seam closes by vertex
+ids.
+
+Points of *another component* are inserted within the lens; points of the same component
+only where they lie on the edge itself (within :data:`COLLINEAR` of its length: a traced
+curve's trailing-edge point on the straight trailing edge between two sections). A loop
+between two networks of one component that is wider than that (the blunt trailing edge
+between a wing's upper and lower surfaces) is a gap of the surface, closed by
+:func:`juncture.surface.assemble.strip_cap`, never folded shut.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["LENS", "COLLINEAR", "split_seams"]
+
+#: A point lies on a boundary edge's line when its distance from the edge is at most this share
+#: of the edge's length (the seam's chord-to-curve sag; a gap between surfaces is wider).
+LENS = 0.05
+
+#: The lens for a point of the edge's own component: on the edge, to round-off.
+COLLINEAR = 1e-9
+
+
+def _boundary_edges(triangles):
+    """(k, 2) directed boundary edges and (k,) the triangle each belongs to."""
+    e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    owner = np.tile(np.arange(len(triangles)), 3)
+    base = int(triangles.max()) + 1
+    key = e[:, 0].astype(np.int64) * base + e[:, 1]
+    rev = e[:, 1].astype(np.int64) * base + e[:, 0]
+    open_ = ~np.isin(key, rev)
+    return e[open_], owner[open_]
+
+
+def _between(p, a, b, lens):
+    """(mask, t, off): which points p (k, 3) lie strictly between a and b within the lens,
+    their parameter along a -> b and their distance from it as a share of its length."""
+    d = b - a
+    length2 = float(d @ d)
+    if length2 == 0.0:
+        return np.zeros(len(p), bool), np.zeros(len(p)), np.full(len(p), np.inf)
+    t = (p - a) @ d / length2
+    off = np.linalg.norm(p - a - t[:, None] * d, axis=1) / np.sqrt(length2)
+    return (t > 1e-9) & (t < 1.0 - 1e-9) & (off <= lens), t, off
+
+
+def _fan(tri, a, b, inserted):
+    """Triangles replacing ``tri`` (which has the directed edge a -> b): a fan from its third
+    corner through the points inserted between a and b."""
+    k = list(tri).index(a)
+    c = tri[(k + 2) % 3]
+    chain = [a, *inserted, b]
+    return [(chain[i], chain[i + 1], c) for i in range(len(chain) - 1)]
+
+
+def _normal(v, t):
+    return np.cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]])
+
+
+def split_seams(vertices, triangles, component, lens=LENS):
+    """Triangles (and their component ids) with every cross-component seam made conformal.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float
+    triangles : (m, 3) int
+    component : (m,) int
+        The component each triangle belongs to.
+    lens : float
+        See :data:`LENS`.
+
+    Returns
+    -------
+    triangles : (m', 3) int
+    parent : (m',) int
+        The input triangle each output triangle comes from (for its component and surface).
+    """
+    triangles = np.asarray(triangles)
+    if not len(triangles):
+        return triangles, np.arange(0)
+    edges, owner = _boundary_edges(triangles)
+    if not len(edges):
+        return triangles, np.arange(len(triangles))
+    # The components whose boundary edges touch each boundary vertex.
+    touch = {}
+    for (a, b), t in zip(edges.tolist(), owner.tolist()):
+        touch.setdefault(a, set()).add(int(component[t]))
+        touch.setdefault(b, set()).add(int(component[t]))
+    ids = np.fromiter(touch, int)
+    pts = vertices[ids]
+    replaced = {}
+    for (a, b), t in zip(edges.tolist(), owner.tolist()):
+        mine = int(component[t])
+        near, s, off = _between(pts, vertices[a], vertices[b], lens)
+        cand = [(float(s[k]), int(ids[k])) for k in np.flatnonzero(near)
+                if touch[int(ids[k])] - {mine} or off[k] <= COLLINEAR]
+        if not cand or t in replaced:
+            continue
+        fan = _fan(triangles[t], a, b, [v for _, v in sorted(cand)])
+        n0 = _normal(vertices, triangles[t])
+        if all(_normal(vertices, f) @ n0 > 0.0 for f in fan):
+            replaced[t] = fan
+    if not replaced:
+        return triangles, np.arange(len(triangles))
+    keep = np.setdiff1d(np.arange(len(triangles)), np.fromiter(replaced, int))
+    new = [np.array(f, dtype=triangles.dtype) for f in replaced.values()]
+    parent = np.concatenate([keep] + [np.full(len(f), t) for t, f in replaced.items()])
+    return np.concatenate([triangles[keep]] + new), parent

@@ -1,0 +1,84 @@
+"""Seams whose two sides carry different points of one line are made conformal."""
+
+import numpy as np
+
+from juncture.surface.assemble import boundary_loops
+from juncture.surface.check import check_mesh
+from juncture.surface.seams import split_seams
+
+
+def _fan_strip(chain, apex_shift):
+    """Triangles between a chain of points (k, 3) and the same chain shifted by apex_shift,
+    as (points, triangles), oriented so the chain's edges run backwards (i+1 -> i)."""
+    outer = chain + apex_shift
+    pts = np.concatenate([chain, outer])
+    k = len(chain)
+    tris = []
+    for i in range(k - 1):
+        tris.append((i + 1, i, k + i))
+        tris.append((i + 1, k + i, k + i + 1))
+    return pts, np.array(tris)
+
+
+def _arc(angles, radius=10.0):
+    return np.stack([radius * np.cos(angles), radius * np.sin(angles),
+                     np.zeros_like(angles)], axis=1)
+
+
+def _two_sides(coarse, fine, gap=0.0):
+    """Two strips in the plane z = 0 meeting along an arc: one outside it carrying the arc's
+    points at ``coarse`` angles, one inside at ``fine`` angles (shifted outwards by ``gap``)."""
+    a_pts, a_tri = _fan_strip(_arc(coarse), 0.0)
+    a_pts[len(coarse):] *= 1.2                       # outward ring
+    b_pts, b_tri = _fan_strip(_arc(fine, 10.0 + gap), 0.0)
+    b_pts[len(fine):] *= 0.8                         # inward ring
+    b_tri = b_tri[:, ::-1] + len(a_pts)              # the other side of the line
+    pts = np.concatenate([a_pts, b_pts])
+    # The shared end points are the same points, bit for bit, as a layout makes them.
+    ends = [len(a_pts), len(a_pts) + len(fine) - 1]
+    tri = np.concatenate([a_tri, b_tri])
+    tri[tri == ends[0]] = 0
+    tri[tri == ends[1]] = len(coarse) - 1
+    return pts, tri, np.r_[np.zeros(len(a_tri), int), np.ones(len(b_tri), int)]
+
+
+def _seam_open_edges(pts, tri):
+    """Boundary edges whose both ends lie on the arc of radius 10."""
+    loops = boundary_loops(tri)
+    r = np.linalg.norm(pts[:, :2], axis=1)
+    on = np.isclose(r, 10.0, rtol=1e-12)
+    edges = [(a, b) for lp in loops for a, b in zip(lp, np.roll(lp, -1))]
+    return sum(bool(on[a] and on[b]) for a, b in edges)
+
+
+def test_a_seam_with_different_points_on_each_side_closes_by_vertex_ids():
+    rng = np.random.default_rng(3)
+    coarse = np.linspace(0.0, 1.0, 6)
+    fine = np.sort(np.r_[0.0, 1.0, rng.uniform(0.02, 0.98, 13)])
+    pts, tri, comp = _two_sides(coarse, fine)
+    assert _seam_open_edges(pts, tri) > 0
+    out, parent = split_seams(pts, tri, comp)
+    assert _seam_open_edges(pts, out) == 0
+    report = check_mesh(pts, out)
+    assert report.misoriented_edges == 0 and report.nonmanifold_edges == 0
+    # Nothing is moved or added: the same vertices; the coarse side now reaches the arc's
+    # points, so it gives up at most the circular segments between its chords and the arc.
+    def area(t):
+        p = pts[t]
+        return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1).sum()
+    alpha = np.diff(coarse)
+    segments = (0.5 * 10.0 ** 2 * (alpha - np.sin(alpha))).sum()
+    assert 0.0 < area(tri) - area(out) <= segments
+    assert set(np.unique(out)) <= set(np.unique(tri))
+    assert np.array_equal(np.sort(np.unique(parent)), np.arange(len(tri)))
+
+
+def test_a_gap_between_two_networks_of_one_component_is_not_folded_shut():
+    coarse = np.linspace(0.0, 1.0, 6)
+    fine = np.linspace(0.0, 1.0, 11)
+    pts, tri, comp = _two_sides(coarse, fine, gap=-0.01)   # a real gap, 1 % of a spacing
+    same = np.zeros_like(comp)
+    out, _ = split_seams(pts, tri, same)
+    assert len(out) == len(tri)                             # untouched
+    out_other, _ = split_seams(pts, tri, comp)              # two components: a seam
+    assert len(out_other) > len(tri)
