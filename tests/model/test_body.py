@@ -27,6 +27,17 @@ def test_point_follows_eqs_2_and_3(x, theta):
     assert abs(b.radial_error(p)) < 1e-12
 
 
+@given(start=st.floats(-3.0, 3.0), k=st.integers(-2, 3))
+def test_top_and_bottom_points_lie_on_the_centre_plane_bit_for_bit(start, k):
+    """An angle interpolated up to pi/2 + k pi comes out a few ulps off it: the point is
+    still on the plane y = 0, so a network and its mirror image share it exactly."""
+    end = 0.5 * np.pi + k * np.pi
+    theta = start + np.linspace(0.0, 1.0, 7)[-1] * (end - start)
+    p = cylinder().point(12.0, theta)
+    assert p[1] == 0.0
+    assert abs(p[2]) == pytest.approx(2.0, rel=1e-15)
+
+
 def test_pchip_radius_reproduces_stations_and_keeps_monotone_shape():
     r = np.array([0.0, 1.0, 1.8, 2.0, 2.0, 1.5])
     b = CircularBody("body", XS, r)

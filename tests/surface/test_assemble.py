@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from juncture.geometry import Geometry
-from juncture.surface.assemble import assemble, cap_polygon
+from juncture.surface.assemble import assemble, cap_polygon, simple_loops
 
 
 def _prism(n_theta=24, n_x=7, length=5.0, radius=1.5, mirror=False):
@@ -131,3 +131,13 @@ def test_the_pdas_wing_body_is_one_closed_surface(fillet, blocks):
     assert mesh.volume() > 0 and tm.volume == pytest.approx(mesh.volume(), rel=1e-12)
     shifted = trimesh.Trimesh(mesh.vertices + [-40.0, 3.0, 7.0], mesh.triangles, process=False)
     assert shifted.volume == pytest.approx(mesh.volume(), rel=1e-9)
+
+
+def test_a_pinched_loop_is_split_into_loops_that_pass_each_vertex_once():
+    # A tip whose upper and lower lines touch at vertices 2 and 5 between its ends.
+    loop = [0, 1, 2, 3, 4, 2, 5, 6, 7, 5, 8]
+    parts = simple_loops(loop)
+    assert sorted(map(tuple, parts)) == [(0, 1, 2, 5, 8), (2, 3, 4), (5, 6, 7)]
+    edges = {(a, b) for p in parts for a, b in zip(p, np.roll(p, -1))}
+    assert edges == set(zip(loop, np.roll(loop, -1)))   # the same directed edges
+    assert [tuple(p) for p in simple_loops([4, 5, 6])] == [(4, 5, 6)]

@@ -301,13 +301,16 @@ class CircularBody:
         """Surface point at global station x and angle theta (TM-4406 eqs 1-3), vectorised.
 
         theta [rad] = 0 on the horizontal to +y, +pi/2 at the top; x and theta broadcast.
-        Returns (..., 3). At theta = +-pi/2 (the float nearest it) the point is exactly on
-        the body's centre plane (cos taken as 0, not 6.1e-17), so a network and its mirror
+        Returns (..., 3). At the top and the bottom (theta within a few ulps of pi/2 + k pi,
+        as an angle interpolated up to pi/2 comes out) the point is exactly on the body's
+        centre plane (cos taken as 0, not 6.1e-17 or 4e-16), so a network and its mirror
         image share their lines on the plane of symmetry bit for bit.
         """
         x, theta = np.broadcast_arrays(np.asarray(x, float), np.asarray(theta, float))
         c, r = self.section_at(x)
-        cos = np.where(np.abs(theta) == 0.5 * np.pi, 0.0, np.cos(theta))
+        cos = np.cos(theta)
+        cos = np.where(np.abs(cos) <= 8.0 * np.spacing(np.maximum(np.abs(theta), 4.0)), 0.0,
+                       cos)
         return np.stack([x, c[..., 0] + r * cos, c[..., 1] + r * np.sin(theta)], -1)
 
     def _slope_table(self):

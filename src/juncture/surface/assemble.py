@@ -25,7 +25,8 @@ import numpy as np
 
 from .seams import split_seams
 
-__all__ = ["SurfaceMesh", "assemble", "mesh", "boundary_loops", "cap_polygon", "strip_cap"]
+__all__ = ["SurfaceMesh", "assemble", "mesh", "boundary_loops", "simple_loops", "cap_polygon",
+           "strip_cap"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -256,11 +257,30 @@ def strip_cap(vertices, loop):
     return tri[ok]
 
 
+def simple_loops(loop):
+    """A boundary loop that passes a vertex more than once (pinched: a tip whose upper and
+    lower lines touch between its ends) split there into loops that pass each vertex once."""
+    out, stack, seen = [], [], {}
+    for v in np.asarray(loop).tolist():
+        if v in seen:
+            k = seen[v]
+            out.append(np.array(stack[k:]))
+            for w in stack[k + 1:]:
+                del seen[w]
+            del stack[k + 1:]
+        else:
+            seen[v] = len(stack)
+            stack.append(v)
+    out.append(np.array(stack))
+    return [lp for lp in out if len(lp) >= 3]
+
+
 def _caps(vertices, triangles, tol):
     """Cap triangles for every planar boundary loop and every thin strip, and the loops left
     open."""
     caps, where, open_ = [], [], []
-    for loop in boundary_loops(triangles):
+    loops = [lp for loop in boundary_loops(triangles) for lp in simple_loops(loop)]
+    for loop in loops:
         pts = vertices[loop]
         if len(loop) < 3:
             open_.append(loop)
