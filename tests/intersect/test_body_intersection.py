@@ -196,3 +196,18 @@ def test_a_line_that_meets_an_arbitrary_body_only_through_a_joint_step_misses():
     np.testing.assert_allclose(res.points[:, 1], 2.0, rtol=0, atol=1e-12 * big.length)
     np.testing.assert_allclose(res.points[:, 0], 4.0 + 0.5 * np.array([0.0, 0.5, 1.0]),
                                rtol=0, atol=1e-12 * big.length)
+
+
+def test_a_sharp_edge_meets_the_body_at_one_point_on_both_sides():
+    """The leading and trailing edges are lofting lines of both surfaces: their intersection
+    point is the same on both, bit for bit, so the seams close by vertex ids."""
+    from juncture.intersect import intersect_body_both
+
+    for z_root in (-1.2, 0.0, 1.7):
+        cfg = wing_body(z_root=z_root, dihedral_deg=5.0, camber=1.0)
+        wing = cfg["wing"]
+        up, lo = intersect_body_both(wing, cfg["body"])
+        same = np.all(wing.lofting_lines("upper") == wing.lofting_lines("lower"), axis=(1, 2))
+        assert same[0] and same[-1]
+        assert np.array_equal(up.points[same], lo.points[same])
+        assert np.array_equal(up.u[same], lo.u[same])

@@ -122,3 +122,21 @@ def test_values_are_immutable():
         w.le[0, 0] = 1.0
     with pytest.raises(AttributeError):
         w.name = "other"
+
+
+@given(extra=st.lists(st.floats(0.5, 99.5), min_size=1, max_size=12))
+def test_extra_chord_stations_keep_the_input_ordinates_bit_for_bit(extra):
+    """A sharp trailing edge (both surfaces at the camber line) stays one line after
+    refinement: the input stations are not re-interpolated."""
+    sharp_up, sharp_lo = UP.copy(), LO.copy()
+    sharp_up[:, -1] = sharp_lo[:, -1] = 0.0
+    w = wing(upper=sharp_up, lower=sharp_lo)
+    fine = w.with_chord_stations(extra)
+    at = np.searchsorted(fine.x_over_c, X)
+    assert np.array_equal(fine.upper[:, at], w.upper)
+    assert np.array_equal(fine.lower[:, at], w.lower)
+    assert np.array_equal(fine.camber[:, at], w.camber)
+    assert np.array_equal(fine.lofting_lines("upper")[-1], fine.lofting_lines("lower")[-1])
+    # And the surface point at the trailing edge is the same point on both sides.
+    s = np.linspace(10.0, 75.0, 9)
+    assert np.array_equal(fine.point(s, 1.0, "upper"), fine.point(s, 1.0, "lower"))

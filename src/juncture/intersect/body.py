@@ -179,8 +179,15 @@ def _intersect(wing, body, sides, samples_per_section, hints):
                             wing.name, wing.n_sections)
     out = []
     m = wing.n_stations
+    # A lofting line both surfaces share (a sharp leading or trailing edge) takes the first
+    # side's point, bit for bit: solved twice, the two can differ in the last bit.
+    same = np.zeros(m, bool)
+    if len(per_side) == 2:
+        same = np.all(per_side[0] == per_side[1], axis=(1, 2))
     for k, side in enumerate(sides):
-        sl = slice(k * m, (k + 1) * m)
+        sl = np.arange(k * m, (k + 1) * m)
+        if k == 1:
+            sl[same] = np.flatnonzero(same)
         pts, found, u = cr.points[sl], cr.found[sl], cr.u[sl]
         theta = np.full(m, np.nan)
         if found.any():

@@ -267,6 +267,11 @@ class WingLike:
         f = xc / 100.0
         up, lo, cam = (interpolate_chordwise(self.x_over_c, a, f, self.chordwise)
                        for a in (self.upper, self.lower, self.camber))
+        # The input stations keep their own ordinates, bit for bit (not the interpolation's
+        # round-off): a sharp edge stays one line on both surfaces.
+        at = np.searchsorted(xc, self.x_over_c)
+        for new, old in ((up, self.upper), (lo, self.lower), (cam, self.camber)):
+            new[..., at] = old
         # Round-off can leave -1e-17 where a thickness returns to zero.
         args = (np.maximum(up, 0.0), np.maximum(lo, 0.0), cam)
         return WingLike(self.name, self.kind, self.le, self.chord, xc, *args, self.mirrored,
