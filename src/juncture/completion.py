@@ -234,7 +234,8 @@ def _other_components(cfg, wing, body, opts, log, known=None):
         if comp.name in by_comp:
             mine = trimmed_networks(comp, by_comp[comp.name], log)
         elif comp.name in pylons:
-            mine = {comp.name: nacelle_network(comp, pylons[comp.name])}
+            mine = {comp.name: nacelle_network(comp, pylons[comp.name],
+                                               n_points=36 * opts.refine + 1)}
         else:
             mine = comp.networks()
             if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
@@ -284,6 +285,29 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
                           "points": int(inter.found.sum()),
                           "max_gap": seam_gap(inter.points, nets[net])})
     return nets, seams
+
+
+def _refined(cfg, k):
+    """``cfg`` with ``k`` times the chord stations of every wing-like component (each input
+    interval divided evenly) and the section points of every circular body (option
+    ``refine``)."""
+    import dataclasses
+
+    from .model import WingLike
+
+    for comp in list(cfg):
+        if isinstance(comp, WingLike):
+            xc = comp.x_over_c
+            t = np.arange(1, k) / k
+            comp = comp.with_chord_stations((xc[:-1, None] + t * np.diff(xc)[:, None]).ravel())
+        elif isinstance(comp, CircularBody):
+            counts = comp.points_per_section or (19,) * len(comp.segments)
+            comp = dataclasses.replace(comp, points_per_section=tuple(
+                (int(m) - 1) * k + 1 for m in counts))
+        else:
+            continue
+        cfg = cfg.with_component(comp)
+    return cfg
 
 
 def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=False,
@@ -352,6 +376,8 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                             "on arbitrary sections (re-interpolated lines can dip into the "
                             "wing or the body near the edges): use blocks=4 or 6 (--blocks)",
                             opts.body)
+    if opts.refine > 1:
+        cfg = _refined(cfg, opts.refine)
     wing = _pick(cfg, opts.wing, "wing")
     body0 = _pick(cfg, opts.body, "fuselage")
     log = [f"complete: fillet={fillet}, keep_area={keep_area}, {opts}"]

@@ -63,6 +63,7 @@ _RULES = {
     "pairs": (lambda v: isinstance(v, tuple), "a tuple of (a, b, role)"),
     "empennage_sections": (lambda v: _integer(v, 0), "an integer >= 0"),
     "min_lofting_lines": (lambda v: _integer(v, 0), "an integer >= 0"),
+    "refine": (lambda v: _integer(v, 1), "an integer >= 1"),
 }
 
 
@@ -177,6 +178,14 @@ class CompleteOptions:
         default, and rarely needed (the re-designed body follows the compensation between
         fillet stations; the PDAS deck's three lofting lines already restore its drag to
         2.3e-4).
+    refine : int
+        Output density: every chordwise interval of every wing-like component and the point
+        spacing of every circular body's and nacelle's cross-sections divided into
+        ``refine`` (1: the deck's own points; the fuselage stations stay the deck's and the
+        intersections'). Body points lie on the body; the wing-like components get extra
+        chord stations on their section curves, refitted through them as
+        ``min_lofting_lines`` does. For meshes whose volume and area converge
+        (``juncture mesh --refine``).
     """
 
     theta_u_deg: float = 20.0
@@ -197,6 +206,7 @@ class CompleteOptions:
     pairs: tuple = ()
     empennage_sections: int = 4
     min_lofting_lines: int = 0
+    refine: int = 1
 
     def __post_init__(self):
         for name in _RULES:

@@ -41,3 +41,10 @@ def test_a_surface_that_fails_a_check_gets_no_mesh_and_one_line(tmp_path, capsys
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "so no mesh was written" in err[0]
     assert not (tmp_path / "out").exists()
+
+
+def test_refine_must_be_a_positive_integer(tmp_path, capsys):
+    assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "o"), "--refine", "0"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--refine" in err[0] and "integer >= 1" in err[0]
+    assert not (tmp_path / "o").exists()

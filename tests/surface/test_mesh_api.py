@@ -59,3 +59,33 @@ def test_the_complete_transport_closes_pods_pylons_fins_and_tail_included():
     assert -0.015 < surface.volume() / exact - 1.0 < 0.0
     names = set(surface.components)
     assert {"body", "wing", "pod 1", "pod 2", "fin 1", "fin 2", "fin 3", "tail 1"} <= names
+
+
+def _model_volume(cfg):
+    dist = normal_area_distribution(cfg, n_x=1601, flow_through=False)
+    return np.trapezoid(dist["total"], dist["x"])
+
+
+def test_refine_brings_the_transport_volume_within_half_a_percent_of_the_model():
+    cfg = jc.read(EXAMPLE_DECK)
+    exact = _model_volume(cfg)
+    coarse = jc.mesh(_complete_refined(cfg, 1)).volume()
+    fine = jc.mesh(_complete_refined(cfg, 2)).volume()
+    assert abs(fine / exact - 1.0) < 0.005 < abs(coarse / exact - 1.0)
+    assert coarse < fine < exact          # flat panels inside the convex-ish surfaces
+
+
+@pytest.mark.slow
+def test_the_volume_converges_under_refinement():
+    cfg = jc.read(EXAMPLE_DECK)
+    exact = _model_volume(cfg)
+    err = [jc.mesh(_complete_refined(cfg, k)).volume() / exact - 1.0 for k in (1, 2, 3, 4)]
+    assert all(abs(b) < abs(a) for a, b in zip(err, err[1:]))
+    # The fuselage stations are the deck's: what is left is its linear panels between them.
+    assert abs(err[-1]) < 0.003
+
+
+def _complete_refined(cfg, k):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.complete(cfg, refine=k)

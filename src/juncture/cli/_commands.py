@@ -80,8 +80,8 @@ def _complete_options(args, fillet):
     """CompleteOptions from complete's flags; a refused value names its flag."""
     from ..options import CompleteOptions, check_combination
 
-    fields = {field: getattr(args, dest) for dest, (field, _) in COMPLETE_FLAGS.items()
-              if getattr(args, dest) is not None}
+    fields = {field: getattr(args, dest, None) for dest, (field, _) in COMPLETE_FLAGS.items()
+              if getattr(args, dest, None) is not None}
     flag_of = {field: flag for field, flag in COMPLETE_FLAGS.values()}
     flag_of.update(keep_area="--keep-area", fillet="--fillet")
     try:

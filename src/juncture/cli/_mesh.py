@@ -16,6 +16,10 @@ def add_parser(sub, common):
     completion_arguments(s, "juncture-mesh")
     s.add_argument("--format", nargs="+", default=["stl"], choices=_FORMATS, metavar="EXT",
                    help=f"mesh formats (default: stl); one or more of {', '.join(_FORMATS)}")
+    s.add_argument("--refine", type=int, default=None, metavar="K",
+                   help="divide every chordwise interval and every cross-section's point "
+                        "spacing into K (default 1: the deck's points); the volume converges "
+                        "as K grows")
     s.add_argument("--ascii", action="store_true",
                    help="ASCII STL with one named solid per component (default: binary)")
     return s

@@ -23,7 +23,8 @@ COMPLETE_FLAGS = {"theta_u": ("theta_u_deg", "--theta-u"), "end": ("end", "--end
                   "blocks": ("blocks", "--blocks"),
                   "single_network": ("single_network", "--single-network"),
                   "compensate": ("compensation", "--compensate"),
-                  "circular_tangent": ("circular_tangent", "--circular-tangent")}
+                  "circular_tangent": ("circular_tangent", "--circular-tangent"),
+                  "refine": ("refine", "--refine")}
 
 
 class OneLineParser(argparse.ArgumentParser):

@@ -5,7 +5,8 @@
 (Shewchuk's convention), 0 when the four points are coplanar. It is evaluated in floating
 point with Shewchuk's static error bound for the rounded differences ((7 + 56 eps) eps times
 the permanent) and, only where that bound cannot decide the sign, again in exact rational
-arithmetic (``fractions.Fraction`` of the floats, which are dyadic rationals). The sign is
+arithmetic (the floats, which are dyadic rationals, as integers over one power-of-two
+denominator). The sign is
 therefore always the exact sign for the given floating-point coordinates. ``orient2d`` is
 the same in the plane.
 
@@ -19,8 +20,6 @@ when two edges cross or a vertex lies in the other triangle.
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import numpy as np
 
 __all__ = ["orient3d", "orient2d", "triangles_intersect", "segments_hit_triangles"]
@@ -30,8 +29,19 @@ _BOUND3 = (7.0 + 56.0 * _EPS) * _EPS
 _BOUND2 = (3.0 + 16.0 * _EPS) * _EPS
 
 
+def _integers(*points):
+    """The coordinates of ``points`` as Python integers over one power-of-two denominator
+    (floats are dyadic rationals, so this is exact; a sign computed from them is the sign
+    for the floats, and much faster than ``Fraction`` arithmetic)."""
+    ratios = [float(v).as_integer_ratio() for p in points for v in p]
+    den = max(q for _, q in ratios)
+    ints = [n * (den // q) for n, q in ratios]
+    k = len(points[0])
+    return [ints[i:i + k] for i in range(0, len(ints), k)]
+
+
 def _exact3(a, b, c, d):
-    a, b, c, d = ([Fraction(float(v)) for v in p] for p in (a, b, c, d))
+    a, b, c, d = _integers(a, b, c, d)
     ad = [a[i] - d[i] for i in range(3)]
     bd = [b[i] - d[i] for i in range(3)]
     cd = [c[i] - d[i] for i in range(3)]
@@ -41,7 +51,7 @@ def _exact3(a, b, c, d):
 
 
 def _exact2(a, b, c):
-    a, b, c = ([Fraction(float(v)) for v in p] for p in (a, b, c))
+    a, b, c = _integers(a, b, c)
     det = (a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0])
     return (det > 0) - (det < 0)
 
