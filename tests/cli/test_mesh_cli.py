@@ -28,6 +28,7 @@ def test_the_bundled_airplane_is_written_closed(tmp_path, capsys):
     assert main(["mesh", str(EXAMPLE_DECK), "-o", str(tmp_path), "--format", "stl"]) == 0
     out = capsys.readouterr().out
     assert "0 intersecting triangle pairs" in out
+    assert "centre of volume 175.6" in out and "overlaps counted once" in out
     tm = trimesh.load(tmp_path / "mesh.stl")
     assert tm.is_watertight and tm.is_winding_consistent and tm.volume > 0
 

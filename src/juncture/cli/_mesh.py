@@ -27,6 +27,8 @@ def add_parser(sub, common):
 
 def run(args, progress):
     """Complete, assemble, check; write only a mesh that is closed and oriented."""
+    import numpy as np
+
     from ..completion import complete
     from ..surface.assemble import assemble
     from ..surface.check import check_mesh
@@ -61,6 +63,13 @@ def run(args, progress):
                    for ext in args.format]
     if not getattr(args, "quiet", False):
         print("\n".join(summary.lines()))
+        mp = mesh.mass_properties()
+        size = float(np.ptp(mesh.vertices, axis=0).max())
+        cg = np.where(np.abs(mp.cg) > 1e-12 * size, mp.cg, 0.0)  # round-off on a plane
+        print("centre of volume " + ", ".join(f"{c:.6g}" for c in cg)
+              + "; inertia per unit density about it Ixx, Iyy, Izz "
+              + ", ".join(f"{mp.inertia[i, i]:.6g}" for i in range(3))
+              + " (the enclosed solid, overlaps counted once)")
         print(f"checked: {report.intersecting_pairs} intersecting triangle pairs (exact "
               f"predicates), Euler characteristic {', '.join(map(str, report.euler))}")
         print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")

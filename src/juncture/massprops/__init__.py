@@ -4,6 +4,7 @@ Every producer returns a :class:`MassProperties` in project axes (x aft, y right
 bodies add by the parallel-axis theorem, and negative densities subtract material.
 """
 
+from .closed import surface_mass_properties
 from .configuration import component_mass_properties, configuration_mass_properties
 from .properties import MassProperties
 from .rotor import Rotor, rotor_disk_integrals
@@ -21,6 +22,7 @@ from .wing import WingSegment, WingSegmentsResult, wing_segments_mass_properties
 
 __all__ = [
     "MassProperties",
+    "surface_mass_properties",
     "ThicknessDistribution",
     "Naca4",
     "Diamond",

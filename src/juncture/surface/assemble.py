@@ -60,6 +60,13 @@ class SurfaceMesh:
         p = self.vertices[self.triangles]
         return float(np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0)
 
+    def mass_properties(self, density=1.0):
+        """:class:`~juncture.massprops.MassProperties` of the solid the closed surface
+        encloses (exact for its triangles; overlapping components counted once)."""
+        from ..massprops.closed import surface_mass_properties
+
+        return surface_mass_properties(self.vertices, self.triangles, density, "surface")
+
     def areas(self):
         """(m,) triangle areas."""
         p = self.vertices[self.triangles]
