@@ -8,7 +8,7 @@ import trimesh
 
 import juncture as jc
 from juncture.analysis.areas import normal_area_distribution
-from tests.support import EXAMPLE_DECK, PDAS_DECK
+from tests.support import DATA, EXAMPLE_DECK, PDAS_DECK
 
 
 def _complete(deck, fillet=None):
@@ -89,3 +89,23 @@ def _complete_refined(cfg, k):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", jc.JunctureWarning)
         return jc.complete(cfg, refine=k)
+
+
+GENERATED = sorted((DATA / "generated").glob("*.inp"))
+
+
+@pytest.mark.parametrize("deck", GENERATED, ids=[p.stem for p in GENERATED])
+def test_generated_airplanes_close(deck):
+    """Airplanes juncture was not built on (tests/data/generated): closed, oriented, no
+    crossing triangles, every intersection point a vertex, and the volume below the
+    model's union of normal areas by no more than the flat panels' sag."""
+    cfg = jc.read(deck)
+    geo = _complete_refined(cfg, 1)
+    surface = jc.mesh(geo)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    verts = {tuple(v) for v in (surface.vertices + 0.0).tolist()}
+    for name, pts in geo.intersections.items():
+        for p in np.asarray(pts)[np.all(np.isfinite(pts), axis=1)]:
+            assert tuple((p + 0.0).tolist()) in verts, name
+    assert -0.02 < surface.volume() / _model_volume(cfg) - 1.0 < 1e-3

@@ -103,8 +103,13 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         top[inside] = np.minimum(top[inside], fin.at(xu[inside]))
     t_u = np.linspace(0.0, 1.0, int(n_upper))
     t_l = np.linspace(0.0, 1.0, int(n_lower))
-    up = body.point(xu[:, None], top[:, None] + t_u[None, :] * (th_u - top)[:, None])
-    lo = body.point(xl[:, None], bottom + t_l[None, :] * (th_l - bottom)[:, None])
+    ang_u = top[:, None] + t_u[None, :] * (th_u - top)[:, None]
+    ang_l = bottom + t_l[None, :] * (th_l - bottom)[:, None]
+    # The rows end exactly at theta_b (not at top + 1.0 * (theta_b - top), a bit off), so
+    # where the upper and lower bounding curves meet the two blocks share the point.
+    ang_u[:, -1], ang_l[:, -1] = th_u, th_l
+    up = body.point(xu[:, None], ang_u)
+    lo = body.point(xl[:, None], ang_l)
     _end_at_points(up, xu, upper_regions, top_value)
     _end_at_points(lo, xl, lower_regions, bottom)
     for fin in fins:  # rows at a fin's stations start exactly at its points

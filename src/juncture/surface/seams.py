@@ -99,13 +99,23 @@ def split_seams(vertices, triangles, component, lens=LENS):
         touch.setdefault(b, set()).add(int(component[t]))
     ids = np.fromiter(touch, int)
     pts = vertices[ids]
-    replaced = {}
-    for (a, b), t in zip(edges.tolist(), owner.tolist()):
+    # Each point goes to the one edge it lies nearest (a point near a thin trailing edge is
+    # in the lens of both the upper and the lower surface's edge).
+    best = {}
+    for e, ((a, b), t) in enumerate(zip(edges.tolist(), owner.tolist())):
         mine = int(component[t])
         near, s, off = _between(pts, vertices[a], vertices[b], lens)
-        cand = [(float(s[k]), int(ids[k])) for k in np.flatnonzero(near)
-                if touch[int(ids[k])] - {mine} or off[k] <= COLLINEAR]
-        if not cand or t in replaced:
+        for k in np.flatnonzero(near):
+            v = int(ids[k])
+            if (touch[v] - {mine} or off[k] <= COLLINEAR) and off[k] < best.get(v, (np.inf,))[0]:
+                best[v] = (float(off[k]), e, float(s[k]))
+    per_edge = {}
+    for v, (_, e, t_v) in best.items():
+        per_edge.setdefault(e, []).append((t_v, v))
+    replaced = {}
+    for e, cand in per_edge.items():
+        (a, b), t = edges[e].tolist(), int(owner[e])
+        if t in replaced:
             continue
         fan = _fan(triangles[t], a, b, [v for _, v in sorted(cand)])
         n0 = _normal(vertices, triangles[t])
