@@ -19,9 +19,10 @@ def _grid_face(origin, du, dv, n):
     return pts.reshape(-1, 3), tri
 
 
-def _box(n=6, size=4.0, depth=1.0):
-    """The closed box [0, size]^2 x [-depth, 0], outward, every face an n x n grid."""
-    o, x, y, z = np.zeros(3), np.array([size, 0, 0.]), np.array([0, size, 0.]), \
+def _box(n=6, size=4.0, depth=1.0, length=None):
+    """The closed box [0, length] x [0, size] x [-depth, 0] (length = size by default),
+    outward, every face an n x n grid."""
+    o, x, y, z = np.zeros(3), np.array([length or size, 0, 0.]), np.array([0, size, 0.]), \
         np.array([0, 0, depth])
     lo = o - z
     faces = [(o, x, y), (lo, y, x), (lo, x, z), (lo + y, z, x), (lo, z, y), (lo + x, y, z)]
@@ -84,3 +85,50 @@ def test_a_loop_that_folds_over_in_projection_is_refused():
     vertices = np.concatenate([vertices, bow])
     loop = len(vertices) - 4 + np.arange(4)
     assert imprint(vertices, triangles, np.ones(len(triangles), bool), loop) is None
+
+
+def test_a_footprint_on_long_triangles_whose_centres_lie_far_away():
+    """A pylon on a wing whose panels run far along the span: triangles are taken by their
+    nearest corner, not their centre, so none under the footprint is left out."""
+    bp, bt = _box(n=3, length=200.0)
+    pp, pt, ring = _prism((101.3, 2.11), 0.5, 1.0, 9, 0.2)
+    vertices, inverse = _merge(np.concatenate([bp, pp]))
+    triangles = inverse[np.concatenate([bt, pt + len(bp)])]
+    host = np.r_[np.ones(len(bt), bool), np.zeros(len(pt), bool)]
+    loop = inverse[len(bp) + np.arange(9)]
+    removed, new = imprint(vertices, triangles, host, loop)
+    keep = np.ones(len(triangles), bool)
+    keep[removed] = False
+    report = check_mesh(vertices, np.concatenate([triangles[keep], new]))
+    assert report.ok, report.failures()
+    x, y = ring[:, 0], ring[:, 1]
+    base = 0.5 * abs(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+    assert report.volume == pytest.approx(200.0 * 4.0 + base, rel=1e-12)
+
+
+def test_footprints_whose_regions_meet_are_cut_together():
+    """Three prisms close together on one face (twin fins either side of the plane of
+    symmetry): their regions share triangles, so they are cut in one triangulation."""
+    from juncture.surface.imprint import imprint_many
+
+    bp, bt = _box(n=4)
+    parts = [_prism(c, 0.3, 1.0, 8, 0.1) for c in ((1.6, 2.0), (2.4, 2.0), (2.0, 2.9))]
+    pts = np.concatenate([bp] + [p for p, _, _ in parts])
+    tris, loops_local, off = [bt], [], len(bp)
+    for p, t, _ in parts:
+        tris.append(t + off)
+        loops_local.append(off + np.arange(8))
+        off += len(p)
+    vertices, inverse = _merge(pts)
+    triangles = inverse[np.concatenate(tris)]
+    host = np.r_[np.ones(len(bt), bool), np.zeros(len(triangles) - len(bt), bool)]
+    cuts = imprint_many(vertices, triangles, host, [inverse[lp] for lp in loops_local])
+    assert len(cuts) == 1                               # one group
+    removed, new = cuts[0]
+    keep = np.ones(len(triangles), bool)
+    keep[removed] = False
+    report = check_mesh(vertices, np.concatenate([triangles[keep], new]))
+    assert report.ok, report.failures()
+    base = sum(0.5 * abs(np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1]))
+               for _, _, r in parts)
+    assert report.volume == pytest.approx(16.0 + base, rel=1e-12)

@@ -319,20 +319,24 @@ def _runs_with(tri, loop):
 
 def _imprint_all(geometry, vertices, triangles, component, surface, components):
     """Every footprint (:mod:`juncture.surface.imprint`) cut into its host."""
-    from .imprint import footprints, imprint
+    from .imprint import footprints, imprint_many
 
+    by_host = {}
     for host, loop in footprints(geometry, vertices, triangles, component, components):
-        cut = imprint(vertices, triangles, component == host, loop)
-        if cut is None:
-            continue
-        removed, new = cut
-        keep = np.ones(len(triangles), bool)
+        by_host.setdefault(host, []).append(loop)
+    cuts = [(host, cut) for host, loops in by_host.items()
+            for cut in imprint_many(vertices, triangles, component == host, loops)]
+    # Every cut is planned on the triangles as assembled; hosts differ or regions are
+    # disjoint, so removing them all at once is safe.
+    keep = np.ones(len(triangles), bool)
+    for _, (removed, _) in cuts:
         keep[removed] = False
-        surf = np.bincount(surface[removed]).argmax()
-        triangles = np.concatenate([triangles[keep], new])
-        component = np.concatenate([component[keep], np.full(len(new), host)])
-        surface = np.concatenate([surface[keep], np.full(len(new), surf)])
-    return triangles, component, surface
+    new_tri, new_comp, new_surf = [triangles[keep]], [component[keep]], [surface[keep]]
+    for host, (removed, new) in cuts:
+        new_tri.append(new)
+        new_comp.append(np.full(len(new), host))
+        new_surf.append(np.full(len(new), np.bincount(surface[removed]).argmax()))
+    return np.concatenate(new_tri), np.concatenate(new_comp), np.concatenate(new_surf)
 
 
 def assemble(geometry, mirror=True, cap=True):

@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["imprint", "footprints"]
+__all__ = ["imprint", "imprint_many", "footprints"]
 
 #: Host vertices nearer the loop than this share of the local edge length are left out.
-CROWD = 0.4
+CROWD = 0.1
 
 
 def _unit(v):
@@ -87,6 +87,35 @@ def _region(vertices, triangles, cand, uv, loop2, margin):
     return np.flatnonzero(hit)
 
 
+def _under(p, corner, normal):
+    """Host triangles (ids into ``corner``) under the points ``p`` (k, 3): for each point,
+    the triangle whose plane is nearest among those it projects into (its exact surface
+    point lies off the flat triangles by their sag); None where a point has none."""
+    lo, hi = corner.min(axis=1), corner.max(axis=1)
+    pad = 0.05 * (hi - lo).max(axis=1, keepdims=True)
+    out = []
+    for q in p:  # a loop has tens of points; each test is vectorised over the host
+        cand = np.flatnonzero(np.all((q >= lo - pad) & (q <= hi + pad), axis=1))
+        if not len(cand):
+            return None
+        a, u, v = corner[cand, 0], corner[cand, 1] - corner[cand, 0], \
+            corner[cand, 2] - corner[cand, 0]
+        nn = _unit(normal[cand])
+        w = q - a
+        dist = np.abs((w * nn).sum(axis=1))
+        w = w - (w * nn).sum(axis=1, keepdims=True) * nn
+        uu, uv, vv = (u * u).sum(1), (u * v).sum(1), (v * v).sum(1)
+        wu, wv = (w * u).sum(1), (w * v).sum(1)
+        den = uu * vv - uv * uv
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s_, t_ = (vv * wu - uv * wv) / den, (uu * wv - uv * wu) / den
+        inside = (s_ >= -1e-6) & (t_ >= -1e-6) & (s_ + t_ <= 1 + 1e-6)
+        if not inside.any():
+            return None
+        out.append(int(cand[inside][np.argmin(dist[inside])]))
+    return np.array(out)
+
+
 def _border(triangles):
     """The single boundary loop of a set of triangles, or None (none, or several)."""
     from .assemble import boundary_loops
@@ -115,58 +144,111 @@ def imprint(vertices, triangles, host, loop):
         or None where the footprint cannot be cut in one plane (a loop that folds over in
         projection, a region with a hole, a triangulation that would fold in space).
     """
-    import pythoncdt as cdt
+    cuts = imprint_many(vertices, triangles, host, [loop])
+    return cuts[0] if cuts else None
+
+
+class _Host:
+    """The host's triangles with their corners, normals and centres."""
+
+    def __init__(self, vertices, triangles, host):
+        self.vertices, self.triangles = vertices, triangles
+        self.hid = np.flatnonzero(host)
+        self.corner = vertices[triangles[self.hid]]
+        c = self.corner
+        self.normal = np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0])
+        self.cent = c.mean(axis=1)
+        self.edge = np.linalg.norm(c - np.roll(c, 1, axis=1), axis=2)
+
+
+def _plan(h_, loop):
+    """(normal, edge length, the host triangles round the loop) for one loop, or None."""
     from scipy.spatial import cKDTree
 
-    loop = np.asarray(loop)
-    p = vertices[loop]
-    hid = np.flatnonzero(host)
-    if len(loop) < 3 or not len(hid):
-        return None
-    corner = vertices[triangles[hid]]
-    normal = np.cross(corner[:, 1] - corner[:, 0], corner[:, 2] - corner[:, 0])
-    cent = corner.mean(axis=1)
-    _, near = cKDTree(cent).query(p, k=min(3, len(hid)))
-    n = _unit(normal[np.unique(near)].sum(axis=0))
-    edges = np.linalg.norm(corner - np.roll(corner, 1, axis=1), axis=2)
-    h = float(np.median(edges[np.unique(near)]))
+    p = h_.vertices[loop]
+    under = _under(p, h_.corner, h_.normal)
+    if under is None:
+        _, under = cKDTree(h_.cent).query(p, k=min(3, len(h_.hid)))
+    under = np.unique(under)
+    n = _unit(_unit(h_.normal[under]).sum(axis=0))
+    h = float(np.median(h_.edge[under].min(axis=1)))  # across the panels, not along
     size = float(np.linalg.norm(p - p.mean(axis=0), axis=1).max())
-    axes = _frame(n)
-    origin = p.mean(axis=0)
-    uv = (vertices - origin) @ axes.T
-    loop2 = uv[loop]
-    if not _simple(loop2):
+    axes, origin = _frame(n), p.mean(axis=0)
+    uv = (h_.vertices - origin) @ axes.T
+    if not _simple(uv[loop]):
         return None
-    front = (_unit(normal) @ n > 0.25) & (np.linalg.norm(cent - origin, axis=1) <= 2.0 * (size + h))
-    cand = hid[front]
+    # Facing the loop's side, or degenerate (the zero-width strip between two traced curves
+    # that coincide away from a pylon faces nowhere, yet lies under it).
+    flat = np.linalg.norm(h_.normal, axis=1) <= 1e-12 * h * h
+    near = np.linalg.norm(h_.corner - origin, axis=2).min(axis=1) <= 2.0 * (size + h)
+    cand = h_.hid[((_unit(h_.normal) @ n > 0.25) | flat) & near]
     if not len(cand):
         return None
-    region = cand[_region(vertices, triangles, cand, uv, loop2, h)]
+    return n, h, cand[_region(h_.vertices, h_.triangles, cand, uv, uv[loop], h)]
+
+
+def imprint_many(vertices, triangles, host, loops):
+    """:func:`imprint` for several loops on one host: loops whose regions share a triangle
+    (twin fins either side of the plane of symmetry) are cut together, in one plane, each
+    a hole of one triangulation. Returns a list of (removed, new), one per group that could
+    be cut (groups never share a triangle)."""
+    h_ = _Host(vertices, triangles, host)
+    loops = [np.asarray(lp) for lp in loops if len(lp) >= 3]
+    if not len(h_.hid) or not loops:
+        return []
+    plans = [(lp, _plan(h_, lp)) for lp in loops]
+    plans = [(lp, pl) for lp, pl in plans if pl is not None]
+    groups = []  # [(loops, normals, edge lengths, region)]
+    for lp, (n, h, region) in plans:
+        joined = [g for g in groups if np.intersect1d(g[3], region).size]
+        groups = [g for g in groups if not any(g is j for j in joined)]
+        groups.append(([lp] + [x for g in joined for x in g[0]],
+                       [n] + [x for g in joined for x in g[1]],
+                       [h] + [x for g in joined for x in g[2]],
+                       np.union1d(region, np.concatenate([g[3] for g in joined] or [[]])
+                                  ).astype(np.int64)))
+    out = []
+    for group_loops, normals, hs, region in groups:
+        cut = _cut(h_, group_loops, _unit(np.sum(normals, axis=0)), max(hs), region)
+        if cut is not None:
+            out.append(cut)
+    return out
+
+
+def _cut(h_, loops, n, h, region):
+    """Re-triangulate ``region`` with the loops as holes (see :func:`imprint`)."""
+    import pythoncdt as cdt
+
+    vertices, triangles = h_.vertices, h_.triangles
+    all_loop = np.concatenate(loops)
+    axes, origin = _frame(n), vertices[all_loop].mean(axis=0)
+    uv = (vertices - origin) @ axes.T
     border = _border(triangles[region])
     if border is None:
         return None
     # Fill what the border encloses (host triangles the margin test left out), once.
-    inner = cand[_inside((cent[front] - origin) @ axes.T, uv[border])]
-    region = np.union1d(region, inner)
+    front = h_.hid[(_unit(h_.normal) @ n > 0.25)
+                   & _inside((h_.cent - origin) @ axes.T, uv[border])]
+    region = np.union1d(region, front)
     border = _border(triangles[region])
-    if border is None or np.isin(loop, border).any():
+    if border is None or np.isin(all_loop, border).any():
         return None
-    used = np.unique(triangles[region])
-    interior = np.setdiff1d(used, border)
-    interior = interior[~_inside(uv[interior], loop2)
-                        & (_distance(uv[interior], loop2) > CROWD * h)]
-    ids = np.concatenate([border, interior, loop])
-    pts2 = uv[ids]
+    interior = np.setdiff1d(np.unique(triangles[region]), np.concatenate([border, all_loop]))
+    for lp in loops:
+        interior = interior[~_inside(uv[interior], uv[lp])
+                            & (_distance(uv[interior], uv[lp]) > CROWD * h)]
+    ids = np.concatenate([border, interior, all_loop])
     local = {int(v): i for i, v in enumerate(ids)}
     if len(local) != len(ids):
         return None
-    nb, nl = len(border), len(loop)
-    cons = [(local[int(border[i])], local[int(border[(i + 1) % nb])]) for i in range(nb)]
-    cons += [(local[int(loop[i])], local[int(loop[(i + 1) % nl])]) for i in range(nl)]
+    cons = []
+    for chain in [border] + loops:
+        k = len(chain)
+        cons += [(local[int(chain[i])], local[int(chain[(i + 1) % k])]) for i in range(k)]
     tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
                             cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
     try:
-        tri.insert_vertices(np.ascontiguousarray(pts2))
+        tri.insert_vertices(np.ascontiguousarray(uv[ids]))
         tri.insert_edges(np.array(cons, np.uint32))
         tri.erase_outer_triangles_and_holes()
     except (RuntimeError, ValueError):
@@ -175,8 +257,7 @@ def imprint(vertices, triangles, host, loop):
         return None
     new = ids[tri.triangles_array()["vertices"].astype(np.int64)]
     q = vertices[new]
-    up = np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n
-    if np.any(up <= 0.0):
+    if np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
         return None
     return region, new
 
