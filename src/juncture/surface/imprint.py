@@ -83,7 +83,7 @@ def _region(vertices, triangles, cand, uv, loop2, margin):
     with np.errstate(divide="ignore", invalid="ignore"):
         lam1 = (w[:, 0] * v[:, 1] - w[:, 1] * v[:, 0]) / det
         lam2 = (u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]) / det
-    hit |= (lam1 >= 0) & (lam2 >= 0) & (lam1 + lam2 <= 1)
+        hit |= (lam1 >= 0) & (lam2 >= 0) & (lam1 + lam2 <= 1)
     return np.flatnonzero(hit)
 
 
@@ -109,11 +109,24 @@ def _under(p, corner, normal):
         den = uu * vv - uv * uv
         with np.errstate(divide="ignore", invalid="ignore"):
             s_, t_ = (vv * wu - uv * wv) / den, (uu * wv - uv * wu) / den
-        inside = (s_ >= -1e-6) & (t_ >= -1e-6) & (s_ + t_ <= 1 + 1e-6)
+            inside = (s_ >= -1e-6) & (t_ >= -1e-6) & (s_ + t_ <= 1 + 1e-6)
         if not inside.any():
             return None
         out.append(int(cand[inside][np.argmin(dist[inside])]))
     return np.array(out)
+
+
+def _outer(triangles, uv):
+    """The boundary loop of a set of triangles that encloses the largest area in the plane
+    (the others are holes the margin test left), or None."""
+    from .assemble import boundary_loops
+
+    def area(loop):
+        p = uv[loop]
+        return abs(np.sum(p[:, 0] * np.roll(p[:, 1], -1) - np.roll(p[:, 0], -1) * p[:, 1]))
+
+    loops = boundary_loops(triangles)
+    return max(loops, key=area) if loops else None
 
 
 def _border(triangles):
@@ -223,13 +236,24 @@ def _cut(h_, loops, n, h, region):
     all_loop = np.concatenate(loops)
     axes, origin = _frame(n), vertices[all_loop].mean(axis=0)
     uv = (vertices - origin) @ axes.T
-    border = _border(triangles[region])
+    border = _outer(triangles[region], uv)
     if border is None:
         return None
     # Fill what the border encloses (host triangles the margin test left out), once.
-    front = h_.hid[(_unit(h_.normal) @ n > 0.25)
-                   & _inside((h_.cent - origin) @ axes.T, uv[border])]
-    region = np.union1d(region, front)
+    # Only triangles reached from the region through shared corners: the far side of a
+    # body can face the same way and project inside too.
+    fill = h_.hid[(_unit(h_.normal) @ n > 0.25)
+                  & _inside((h_.cent - origin) @ axes.T, uv[border])]
+    fill = np.setdiff1d(fill, region)
+    for _ in range(50):
+        reached = fill[np.isin(triangles[fill], triangles[region]).any(axis=1)]
+        if not len(reached):
+            break
+        region = np.union1d(region, reached)
+        fill = np.setdiff1d(fill, reached)
+    # And any host triangle all of whose corners the region uses (a sliver facing nowhere).
+    closed = h_.hid[np.isin(triangles[h_.hid], triangles[region]).all(axis=1)]
+    region = np.union1d(region, closed)
     border = _border(triangles[region])
     if border is None or np.isin(all_loop, border).any():
         return None
