@@ -109,3 +109,22 @@ def test_generated_airplanes_close(deck):
         for p in np.asarray(pts)[np.all(np.isfinite(pts), axis=1)]:
             assert tuple((p + 0.0).tolist()) in verts, name
     assert -0.02 < surface.volume() / _model_volume(cfg) - 1.0 < 1e-3
+
+
+@pytest.mark.parametrize("fillet", ["cubic", "circular"])
+@pytest.mark.parametrize("keep_area", [False, True])
+def test_the_transport_with_a_fillet_closes(fillet, keep_area):
+    """The fillets' strips, the fuselage blocks beside them and the degenerate fillet lines
+    at the leading and trailing edges all meet by vertex ids; with keep_area the fuselage
+    gives up what the fillets add, so the enclosed volume is the sharp airplane's."""
+    cfg = jc.read(EXAMPLE_DECK)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        surface = jc.mesh(jc.complete(cfg, fillet, keep_area))
+        sharp = jc.mesh(jc.complete(cfg)).volume()
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    if keep_area:
+        assert surface.volume() == pytest.approx(sharp, rel=1e-3)
+    else:
+        assert surface.volume() > sharp

@@ -61,6 +61,24 @@ class FilletLines:
     blend_range: tuple = None
     control: np.ndarray = None
 
+    def __post_init__(self):
+        # A line whose points are one point to round-off (no fillet at the leading or
+        # trailing edge) is its end, the intersection point, start included: not a cubic
+        # through it that round-off spreads by an ulp. The upper and lower fillets and the
+        # body rows there then share the point, bit for bit.
+        pts = np.asarray(self.points)
+        start, end = np.asarray(self.start), np.asarray(self.end)
+        if pts.ndim == 3 and start.shape == (len(pts), 3) and end.shape == start.shape:
+            scale = 1.0 + np.abs(end).max(axis=1)
+            spread = np.abs(pts - end[:, None, :]).max(axis=(1, 2))
+            point = np.isfinite(end).all(axis=1) & (spread <= 16 * np.finfo(float).eps * scale)
+            if point.any():
+                pts, start = np.array(pts, dtype=float), np.array(start, dtype=float)
+                pts[point] = end[point][:, None, :]
+                start[point] = end[point]
+                object.__setattr__(self, "points", pts)
+                object.__setattr__(self, "start", start)
+
 
 def hermite(p0, p1, t0, t1, s):
     """Cubic Hermite curves, vectorised: (m, 3) ends and tangents, s (k,) -> (m, k, 3)."""

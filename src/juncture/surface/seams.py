@@ -112,18 +112,75 @@ def split_seams(vertices, triangles, component, lens=LENS):
     per_edge = {}
     for v, (_, e, t_v) in best.items():
         per_edge.setdefault(e, []).append((t_v, v))
-    replaced = {}
+    replaced, used = [], set()
     for e, cand in per_edge.items():
         (a, b), t = edges[e].tolist(), int(owner[e])
-        if t in replaced:
+        if t in used:
             continue
-        fan = _fan(triangles[t], a, b, [v for _, v in sorted(cand)])
+        chain = [v for _, v in sorted(cand)]
+        fan = _fan(triangles[t], a, b, chain)
         n0 = _normal(vertices, triangles[t])
         if all(_normal(vertices, f) @ n0 > 0.0 for f in fan):
-            replaced[t] = fan
+            cut = ([t], fan)
+        else:  # the fan would fold: the other side gives up the points instead
+            cut = _collapse(vertices, triangles, a, b, chain)
+            if cut is None or used.intersection(cut[0]):
+                continue
+        used.update(cut[0])
+        replaced.append(cut)
     if not replaced:
         return triangles, np.arange(len(triangles))
-    keep = np.setdiff1d(np.arange(len(triangles)), np.fromiter(replaced, int))
-    new = [np.array(f, dtype=triangles.dtype) for f in replaced.values()]
-    parent = np.concatenate([keep] + [np.full(len(f), t) for t, f in replaced.items()])
+    keep = np.setdiff1d(np.arange(len(triangles)), np.fromiter(used, int))
+    new = [np.asarray(f, dtype=triangles.dtype).reshape(-1, 3) for _, f in replaced]
+    parent = np.concatenate([keep] + [np.full(len(f), r[0]) for r, f in replaced])
     return np.concatenate([triangles[keep]] + new), parent
+
+
+def _collapse(vertices, triangles, a, b, chain):
+    """(removed, new): the other side's triangles round ``chain`` re-triangulated with the
+    chain replaced by the edge ``b -> a`` (the other side runs the seam the other way), so
+    both sides carry the edge; the chain's points, which lie on the seam's line but beyond
+    this side's first strip, leave the mesh. Constrained Delaunay in the triangles' mean
+    plane, no point added; None where it would fold."""
+    import pythoncdt as cdt
+
+    from .assemble import boundary_loops
+    from .imprint import _frame, _simple
+
+    ring = np.flatnonzero(np.isin(triangles, chain).any(axis=1))
+    loops = boundary_loops(triangles[ring])
+    if len(loops) != 1:
+        return None
+    border = [int(v) for v in loops[0]]
+    # The other side runs b -> chain reversed -> a; put b first.
+    if b not in border:
+        return None
+    k = border.index(b)
+    border = border[k:] + border[:k]
+    path = [b] + chain[::-1] + [a]
+    if border[:len(path)] != path:
+        return None
+    border = [b] + border[len(path) - 1:]          # b, a, ... back to b
+    p = vertices[triangles[ring]]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]).sum(axis=0)
+    n /= np.linalg.norm(n)
+    interior = np.setdiff1d(np.unique(triangles[ring]), border + chain)
+    ids = np.concatenate([np.array(border), interior]).astype(np.int64)
+    uv = (vertices[ids] - vertices[ids].mean(axis=0)) @ _frame(n).T
+    m = len(border)
+    if not _simple(uv[:m]):
+        return None
+    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
+                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
+    try:
+        tri.insert_vertices(np.ascontiguousarray(uv))
+        tri.insert_edges(np.array([(i, (i + 1) % m) for i in range(m)], np.uint32))
+        tri.erase_outer_triangles()
+    except (RuntimeError, ValueError):
+        return None
+    new = ids[tri.triangles_array()["vertices"].astype(np.int64)]
+    q = vertices[new]
+    if tri.vertices_count() != len(ids) or len(new) != m + 2 * len(interior) - 2 or \
+            np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
+        return None
+    return [int(r) for r in ring], new
