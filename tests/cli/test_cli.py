@@ -49,6 +49,13 @@ def test_demo_runs_the_whole_pipeline(tmp_path, capsys):
     assert abs(drag["cubic fillet, fixed area"]["D_over_q"] - base) < 1e-3 * base
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert len(summary["intersections"]) == 14  # every touching pair, both surfaces
+    import trimesh
+
+    closed = trimesh.load(tmp_path / "mesh.stl")         # the airplane as one closed surface
+    assert closed.is_watertight and closed.is_winding_consistent
+    mass = (tmp_path / "massprops.txt").read_text()
+    line = next(x for x in mass.splitlines() if x.startswith("enclosed solid"))
+    assert f"{closed.volume:.6g}" in line
     out = capsys.readouterr().out
     assert "touching pairs:" in out and "largest gap" in out
 

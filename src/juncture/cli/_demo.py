@@ -48,10 +48,15 @@ def demo(args, progress):
             json.dump({k: {f: v[f] for f in ("mach", "D_over_q", "CD", "method")}
                        for k, v in cases.items()}, fh, indent=1)
         written += ["wavedrag_areas.png", "wavedrag.json"]
-        bar.step("mass properties")
+        bar.step("closed mesh and mass properties")
         total, parts = configuration_mass_properties(geo.configuration)
+        solid = _closed_mesh(geo, out, written)
         with atomic_output(out / "massprops.txt") as fh:
             fh.write(format_table(total, parts) + "\n")
+            if solid is not None:
+                fh.write(f"enclosed solid of mesh.stl (overlaps counted once): volume "
+                         f"{solid.volume:.6g}, centre " + ", ".join(f"{c:.6g}" for c in
+                                                                      solid.cg) + "\n")
         written.append("massprops.txt")
         bar.step("report")
         written.append(write_report(cfg, geo, out, command="juncture demo", units=args.units,
@@ -62,3 +67,19 @@ def demo(args, progress):
              f"({100 * (r['D_over_q'] - base) / base:+.3f} %)")
     _say(args, f"wrote {len(written)} files to {out}/: {', '.join(written)}")
     return 0
+
+
+def _closed_mesh(geo, out, written):
+    """mesh.stl, the completed airplane as one closed surface, and its enclosed solid's
+    mass properties; None (with a line saying why) where it does not close."""
+    from ..errors import GeometryError
+    from ..surface.assemble import mesh
+    from ..surface.write import write_mesh
+
+    try:
+        surface = mesh(geo)
+    except GeometryError as exc:
+        print(f"juncture demo: no mesh.stl: {exc}")
+        return None
+    written.append(write_mesh(surface, out / "mesh.stl").name)
+    return surface.mass_properties()
