@@ -16,57 +16,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from .plane import constrained_triangles, distance, frame, inside, is_simple, unit
+
 __all__ = ["imprint", "imprint_many", "footprints"]
 
 #: Host vertices nearer the loop than this share of the local edge length are left out.
 CROWD = 0.1
-
-
-def _unit(v):
-    n = np.linalg.norm(v, axis=-1, keepdims=True)
-    return v / np.where(n > 0, n, 1.0)
-
-
-def _frame(n):
-    """(2, 3) in-plane axes e1, e2 with e1 x e2 = n."""
-    e1 = np.cross(n, np.eye(3)[int(np.argmin(np.abs(n)))])
-    e1 /= np.linalg.norm(e1)
-    return np.stack([e1, np.cross(n, e1)])
-
-
-def _inside(pts, poly):
-    """(k,) whether 2-D points lie inside the closed polygon (crossing number)."""
-    a, b = poly, np.roll(poly, -1, axis=0)
-    x, y = pts[:, None, 0], pts[:, None, 1]
-    cross = (a[None, :, 1] > y) != (b[None, :, 1] > y)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        xi = a[None, :, 0] + (y - a[None, :, 1]) * (b[None, :, 0] - a[None, :, 0]) / (
-            b[None, :, 1] - a[None, :, 1])
-    return (cross & (x < xi)).sum(axis=1) % 2 == 1
-
-
-def _distance(pts, poly):
-    """(k,) distance of 2-D points from the closed polygon's edges."""
-    a, d = poly, np.roll(poly, -1, axis=0) - poly
-    rel = pts[:, None, :] - a[None]
-    t = np.clip((rel * d[None]).sum(-1) / np.maximum((d * d).sum(-1), 1e-300), 0.0, 1.0)
-    return np.linalg.norm(rel - t[..., None] * d[None], axis=-1).min(axis=1)
-
-
-def _simple(poly):
-    """Whether a closed 2-D polygon has no two non-adjacent edges that cross."""
-    a, b = poly, np.roll(poly, -1, axis=0)
-    k = len(poly)
-
-    def orient(p, q, r):
-        return np.sign((q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1])
-                       - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0]))
-    i, j = np.triu_indices(k, 2)
-    keep = ~((i == 0) & (j == k - 1))
-    i, j = i[keep], j[keep]
-    d1, d2 = orient(a[i], b[i], a[j]), orient(a[i], b[i], b[j])
-    d3, d4 = orient(a[j], b[j], a[i]), orient(a[j], b[j], b[i])
-    return not np.any((d1 * d2 < 0) & (d3 * d4 < 0))
 
 
 def _region(vertices, triangles, cand, uv, loop2, margin):
@@ -74,7 +29,7 @@ def _region(vertices, triangles, cand, uv, loop2, margin):
     comes within ``margin`` of it."""
     t2 = uv[triangles[cand]]                                    # (c, 3, 2)
     corners = t2.reshape(-1, 2)
-    hit = _inside(corners, loop2) | (_distance(corners, loop2) <= margin)
+    hit = inside(corners, loop2) | (distance(corners, loop2) <= margin)
     hit = hit.reshape(-1, 3).any(axis=1)
     # A loop that lies inside one large triangle.
     u, v = t2[:, 1] - t2[:, 0], t2[:, 2] - t2[:, 0]
@@ -100,7 +55,7 @@ def _under(p, corner, normal):
             return None
         a, u, v = corner[cand, 0], corner[cand, 1] - corner[cand, 0], \
             corner[cand, 2] - corner[cand, 0]
-        nn = _unit(normal[cand])
+        nn = unit(normal[cand])
         w = q - a
         dist = np.abs((w * nn).sum(axis=1))
         w = w - (w * nn).sum(axis=1, keepdims=True) * nn
@@ -183,18 +138,18 @@ def _plan(h_, loop):
     if under is None:
         _, under = cKDTree(h_.cent).query(p, k=min(3, len(h_.hid)))
     under = np.unique(under)
-    n = _unit(_unit(h_.normal[under]).sum(axis=0))
+    n = unit(unit(h_.normal[under]).sum(axis=0))
     h = float(np.median(h_.edge[under].min(axis=1)))  # across the panels, not along
     size = float(np.linalg.norm(p - p.mean(axis=0), axis=1).max())
-    axes, origin = _frame(n), p.mean(axis=0)
+    axes, origin = frame(n), p.mean(axis=0)
     uv = (h_.vertices - origin) @ axes.T
-    if not _simple(uv[loop]):
+    if not is_simple(uv[loop]):
         return None
     # Facing the loop's side, or degenerate (the zero-width strip between two traced curves
     # that coincide away from a pylon faces nowhere, yet lies under it).
     flat = np.linalg.norm(h_.normal, axis=1) <= 1e-12 * h * h
     near = np.linalg.norm(h_.corner - origin, axis=2).min(axis=1) <= 2.0 * (size + h)
-    cand = h_.hid[((_unit(h_.normal) @ n > 0.25) | flat) & near]
+    cand = h_.hid[((unit(h_.normal) @ n > 0.25) | flat) & near]
     if not len(cand):
         return None
     return n, h, cand[_region(h_.vertices, h_.triangles, cand, uv, uv[loop], h)]
@@ -222,7 +177,7 @@ def imprint_many(vertices, triangles, host, loops):
                                   ).astype(np.int64)))
     out = []
     for group_loops, normals, hs, region in groups:
-        cut = _cut(h_, group_loops, _unit(np.sum(normals, axis=0)), max(hs), region)
+        cut = _cut(h_, group_loops, unit(np.sum(normals, axis=0)), max(hs), region)
         if cut is not None:
             out.append(cut)
     return out
@@ -230,11 +185,9 @@ def imprint_many(vertices, triangles, host, loops):
 
 def _cut(h_, loops, n, h, region):
     """Re-triangulate ``region`` with the loops as holes (see :func:`imprint`)."""
-    import pythoncdt as cdt
-
     vertices, triangles = h_.vertices, h_.triangles
     all_loop = np.concatenate(loops)
-    axes, origin = _frame(n), vertices[all_loop].mean(axis=0)
+    axes, origin = frame(n), vertices[all_loop].mean(axis=0)
     uv = (vertices - origin) @ axes.T
     border = _outer(triangles[region], uv)
     if border is None:
@@ -242,8 +195,8 @@ def _cut(h_, loops, n, h, region):
     # Fill what the border encloses (host triangles the margin test left out), once.
     # Only triangles reached from the region through shared corners: the far side of a
     # body can face the same way and project inside too.
-    fill = h_.hid[(_unit(h_.normal) @ n > 0.25)
-                  & _inside((h_.cent - origin) @ axes.T, uv[border])]
+    fill = h_.hid[(unit(h_.normal) @ n > 0.25)
+                  & inside((h_.cent - origin) @ axes.T, uv[border])]
     fill = np.setdiff1d(fill, region)
     for _ in range(50):
         reached = fill[np.isin(triangles[fill], triangles[region]).any(axis=1)]
@@ -259,27 +212,17 @@ def _cut(h_, loops, n, h, region):
         return None
     interior = np.setdiff1d(np.unique(triangles[region]), np.concatenate([border, all_loop]))
     for lp in loops:
-        interior = interior[~_inside(uv[interior], uv[lp])
-                            & (_distance(uv[interior], uv[lp]) > CROWD * h)]
+        interior = interior[~inside(uv[interior], uv[lp])
+                            & (distance(uv[interior], uv[lp]) > CROWD * h)]
     ids = np.concatenate([border, interior, all_loop])
     local = {int(v): i for i, v in enumerate(ids)}
     if len(local) != len(ids):
         return None
-    cons = []
-    for chain in [border] + loops:
-        k = len(chain)
-        cons += [(local[int(chain[i])], local[int(chain[(i + 1) % k])]) for i in range(k)]
-    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
-                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
-    try:
-        tri.insert_vertices(np.ascontiguousarray(uv[ids]))
-        tri.insert_edges(np.array(cons, np.uint32))
-        tri.erase_outer_triangles_and_holes()
-    except (RuntimeError, ValueError):
+    local_tri = constrained_triangles(uv[ids], [[local[int(v)] for v in chain]
+                                                for chain in [border] + loops], holes=True)
+    if local_tri is None:
         return None
-    if tri.vertices_count() != len(ids):
-        return None
-    new = ids[tri.triangles_array()["vertices"].astype(np.int64)]
+    new = ids[local_tri]
     q = vertices[new]
     if np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
         return None

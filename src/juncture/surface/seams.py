@@ -142,10 +142,8 @@ def _collapse(vertices, triangles, a, b, chain):
     both sides carry the edge; the chain's points, which lie on the seam's line but beyond
     this side's first strip, leave the mesh. Constrained Delaunay in the triangles' mean
     plane, no point added; None where it would fold."""
-    import pythoncdt as cdt
-
     from .assemble import boundary_loops
-    from .imprint import _frame, _simple
+    from .plane import constrained_triangles, frame, is_simple
 
     ring = np.flatnonzero(np.isin(triangles, chain).any(axis=1))
     loops = boundary_loops(triangles[ring])
@@ -166,21 +164,16 @@ def _collapse(vertices, triangles, a, b, chain):
     n /= np.linalg.norm(n)
     interior = np.setdiff1d(np.unique(triangles[ring]), border + chain)
     ids = np.concatenate([np.array(border), interior]).astype(np.int64)
-    uv = (vertices[ids] - vertices[ids].mean(axis=0)) @ _frame(n).T
+    uv = (vertices[ids] - vertices[ids].mean(axis=0)) @ frame(n).T
     m = len(border)
-    if not _simple(uv[:m]):
+    if not is_simple(uv[:m]):
         return None
-    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
-                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
-    try:
-        tri.insert_vertices(np.ascontiguousarray(uv))
-        tri.insert_edges(np.array([(i, (i + 1) % m) for i in range(m)], np.uint32))
-        tri.erase_outer_triangles()
-    except (RuntimeError, ValueError):
+    local = constrained_triangles(uv, [list(range(m))])
+    if local is None:
         return None
-    new = ids[tri.triangles_array()["vertices"].astype(np.int64)]
+    new = ids[local]
     q = vertices[new]
-    if tri.vertices_count() != len(ids) or len(new) != m + 2 * len(interior) - 2 or \
+    if len(new) != m + 2 * len(interior) - 2 or \
             np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
         return None
     return [int(r) for r in ring], new
