@@ -238,28 +238,27 @@ def footprints(geometry, vertices, triangles, component, components):
     """
     from .assemble import boundary_loops
 
-    keys = {}
-    v = np.ascontiguousarray(vertices + 0.0)
-    for k, row in enumerate(v.view(np.dtype((np.void, 24))).ravel()):
-        keys[row.tobytes()] = k
+    def keys(points):
+        q = np.ascontiguousarray(np.asarray(points, float) + 0.0)
+        return q.view(np.dtype((np.void, 24))).ravel()
+
+    vkeys = keys(vertices)
+    order = np.argsort(vkeys)
     on = {}
     for name, pts in geometry.intersections.items():
         a, rest = name.split("/", 1)
         b = rest.rsplit(" ", 1)[0]
         for q in (pts, pts * np.array([1.0, -1.0, 1.0])):
-            q = np.ascontiguousarray(np.asarray(q, float) + 0.0)
-            for row in q[np.all(np.isfinite(q), axis=1)]:
-                k = keys.get(row.tobytes())
-                if k is not None:
-                    on.setdefault(k, set()).add((a, b))
+            q = np.asarray(q, float)
+            qk = keys(q[np.all(np.isfinite(q), axis=1)])
+            at = np.minimum(np.searchsorted(vkeys, qk, sorter=order), len(order) - 1)
+            for k in order[at][vkeys[order[at]] == qk].tolist():
+                on.setdefault(k, set()).add((a, b))
     out = []
-    vertex_comp = {}
-    for t, c in zip(triangles.tolist(), component.tolist()):
-        for x in t:
-            vertex_comp.setdefault(x, set()).add(components[c])
     for loop in boundary_loops(triangles):
         pairs = [on.get(int(x), set()) for x in loop]
-        owners = set().union(*(vertex_comp[int(x)] for x in loop))
+        owners = {components[c] for c in np.unique(component[np.isin(triangles, loop)
+                                                               .any(axis=1)])}
         for a, b in set().union(*pairs):
             share = np.mean([(a, b) in s for s in pairs])
             if share >= 0.5 and owners == {a} and b in components:
