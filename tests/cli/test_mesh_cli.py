@@ -49,3 +49,29 @@ def test_refine_must_be_a_positive_integer(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--refine" in err[0] and "integer >= 1" in err[0]
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("flag, value, expected", [("--min-angle", "40", "0 (off) to 30"),
+                                                   ("--tolerance", "0", "> 0"),
+                                                   ("--edge-length", "-1", "> 0")])
+def test_sizing_options_out_of_range_get_one_line(tmp_path, capsys, flag, value, expected):
+    assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "o"), flag, value]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and flag in err[0] and expected in err[0]
+    assert not (tmp_path / "o").exists()
+
+
+def test_the_triangles_are_re_triangulated_unless_min_angle_is_zero(tmp_path, capsys):
+    import trimesh
+
+    from juncture.surface.quality import triangle_angles
+
+    shares = []
+    for k, angle in enumerate(["25", "0"]):
+        out = tmp_path / str(k)
+        assert main(["mesh", str(PDAS_DECK), "-o", str(out), "--min-angle", angle]) == 0
+        tm = trimesh.load(out / "mesh.stl")
+        assert tm.is_watertight and tm.is_winding_consistent
+        smallest = triangle_angles(tm.vertices, tm.faces).min(axis=1)
+        shares.append((smallest >= 20.0).mean())
+    assert shares[0] >= 0.97 > shares[1]

@@ -20,6 +20,16 @@ def add_parser(sub, common):
                    help="divide every chordwise interval and every cross-section's point "
                         "spacing into K (default 1: the deck's points); the volume converges "
                         "as K grows")
+    s.add_argument("--min-angle", type=float, default=25.0, metavar="DEG",
+                   help="re-triangulate every surface until its triangles' smallest angle "
+                        "is at least DEG where the corners allow (default 25; 0 keeps the "
+                        "networks' own triangles)")
+    s.add_argument("--tolerance", type=float, default=1e-4, metavar="SHARE",
+                   help="largest distance of a triangle's centre from the surface, as a "
+                        "share of the airplane's size (default 1e-4)")
+    s.add_argument("--edge-length", type=float, default=None, metavar="H",
+                   help="no triangle larger than an equilateral one of edge H (deck units; "
+                        "default: none, the angle and the tolerance decide)")
     s.add_argument("--ascii", action="store_true",
                    help="ASCII STL with one named solid per component (default: binary)")
     return s
@@ -30,7 +40,7 @@ def run(args, progress):
     import numpy as np
 
     from ..completion import complete
-    from ..surface.assemble import assemble
+    from ..surface.assemble import assemble, quality
     from ..surface.check import check_mesh
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
@@ -42,7 +52,8 @@ def run(args, progress):
         if not hasattr(args, dest):
             setattr(args, dest, None)
     opts = _complete_options(args, fillet)
-    with progress(4, "mesh") as bar:
+    _check_sizing(args, fail)
+    with progress(5, "mesh") as bar:
         bar.step("read and complete")
         cfg = read_configuration(args.deck, "mesh")
         geo = complete(cfg, fillet, args.keep_area, options=opts)
@@ -57,6 +68,11 @@ def run(args, progress):
         if not report.ok:
             fail("the completed surface fails the checks of juncture check, so no mesh was "
                  "written: " + "; ".join(report.failures()))
+        if args.min_angle:
+            bar.step(f"re-triangulate (smallest angle {args.min_angle:g} deg)")
+            better, checked = quality(mesh, args.min_angle, args.edge_length, args.tolerance)
+            if checked is not None:
+                mesh, report, summary = better, checked, summarize(better)
         bar.step("write " + " ".join(args.format))
         out = output_dir(args.output)
         written = [write_mesh(mesh, out / f"mesh.{ext}", ascii=args.ascii).name
@@ -74,3 +90,14 @@ def run(args, progress):
               f"predicates), Euler characteristic {', '.join(map(str, report.euler))}")
         print(f"wrote {len(written)} files to {out}/: {', '.join(written)}")
     return 0
+
+
+def _check_sizing(args, fail):
+    """One line for a sizing option out of range."""
+    if not 0.0 <= args.min_angle <= 30.0:
+        fail(f"--min-angle {args.min_angle:g}: expected 0 (off) to 30 degrees (a larger "
+             "smallest angle cannot be guaranteed)")
+    if not args.tolerance > 0.0:
+        fail(f"--tolerance {args.tolerance:g}: expected a share of the size > 0, e.g. 1e-4")
+    if args.edge_length is not None and not args.edge_length > 0.0:
+        fail(f"--edge-length {args.edge_length:g}: expected a length > 0 in deck units")

@@ -25,8 +25,8 @@ import numpy as np
 
 from .seams import split_seams
 
-__all__ = ["SurfaceMesh", "assemble", "mesh", "boundary_loops", "simple_loops", "cap_polygon",
-           "strip_cap"]
+__all__ = ["SurfaceMesh", "assemble", "mesh", "quality", "boundary_loops", "simple_loops",
+           "cap_polygon", "strip_cap"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -396,14 +396,19 @@ def assemble(geometry, mirror=True, cap=True):
                        tuple(open_loops))
 
 
-def mesh(geometry, mirror=True, cap=True, check=True):
+def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
+         tolerance=1e-4):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`assemble` (both halves unless ``mirror=False``, planar
-    open loops capped unless ``cap=False``), then, with ``check``, every check of
-    :func:`juncture.surface.check.check_mesh` (closed, manifold, oriented, positive volume,
-    no self-intersection under exact predicates): a surface that fails one is refused with a
-    :class:`~juncture.errors.GeometryError` that says what fails, in one line.
+    open loops capped unless ``cap=False``), then :func:`juncture.surface.remesh.remesh`
+    (triangles of at least ``min_angle`` degrees where the corners allow, at most
+    ``tolerance`` times the airplane's size off its networks, no larger than equilateral
+    triangles of ``edge_length``; ``min_angle=0`` keeps the networks' own triangles), then,
+    with ``check``, every check of :func:`juncture.surface.check.check_mesh` (closed,
+    manifold, oriented, positive volume, no self-intersection under exact predicates): a
+    surface that fails one is refused with a :class:`~juncture.errors.GeometryError` that
+    says what fails, in one line.
 
     Returns
     -------
@@ -411,16 +416,54 @@ def mesh(geometry, mirror=True, cap=True, check=True):
         ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
         ``wetted_area()``.
     """
-    from ..errors import GeometryError
     from .check import check_mesh
 
     surface = assemble(geometry, mirror=mirror, cap=cap)
     if check:
-        failures = check_mesh(surface.vertices, surface.triangles).failures()
-        if surface.open_loops:
-            failures.insert(0, f"{len(surface.open_loops)} open boundary loops (seams whose "
-                               "two sides do not carry the same points)")
-        if failures:
-            raise GeometryError("the completed surface is not closed and valid: "
-                                + "; ".join(failures))
+        _refuse(surface, check_mesh(surface.vertices, surface.triangles).failures())
+    if min_angle:
+        surface, _ = quality(surface, min_angle, edge_length, tolerance, check)
     return surface
+
+
+def _refuse(surface, failures):
+    from ..errors import GeometryError
+
+    if surface.open_loops:
+        failures.insert(0, f"{len(surface.open_loops)} open boundary loops (seams whose "
+                           "two sides do not carry the same points)")
+    if failures:
+        raise GeometryError("the completed surface is not closed and valid: "
+                            + "; ".join(failures))
+
+
+def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True):
+    """(surface, report): ``surface`` re-triangulated by
+    :func:`juncture.surface.remesh.remesh` and, with ``check``, its
+    :func:`~juncture.surface.check.check_mesh` report; the surface as it was (report None),
+    with a :class:`~juncture.errors.JunctureWarning`, where the re-triangulation fails or
+    its checks do. An open surface is returned as it is."""
+    import warnings
+
+    from ..errors import GeometryError, JunctureWarning
+    from .check import check_mesh
+    from .remesh import remesh
+
+    if surface.open_loops:
+        return surface, None
+    try:
+        better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
+                        tolerance=tolerance)
+    except GeometryError as exc:
+        failures = [str(exc)]
+    else:
+        if not check:
+            return better, None
+        report = check_mesh(better.vertices, better.triangles)
+        failures = report.failures()
+        if not failures:
+            return better, report
+    warnings.warn("the re-triangulation for triangle quality was not kept ("
+                  + "; ".join(failures) + "): the networks' own triangles are used",
+                  JunctureWarning, stacklevel=3)
+    return surface, None

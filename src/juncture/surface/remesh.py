@@ -1,0 +1,415 @@
+"""Re-triangulate an assembled surface for triangle quality, keeping it closed and exact.
+
+The assembled surface (:func:`juncture.surface.assemble.assemble`) uses the networks' own
+points: long, thin quads along the span and slivers where seams meet. Each patch (the
+connected part of one network or cap) is cut open into a disc and flattened conformally
+(:mod:`juncture.surface.chart`); its boundary edges become constraints and every vertex it
+has is kept, so intersection and fillet points stay vertices and the seams stay shared. In
+the chart a constrained Delaunay triangulation (PythonCDT) is refined until every triangle's
+smallest angle reaches ``min_angle`` (and, with ``edge_length``, its area that of an
+equilateral triangle of that edge). New interior points are taken back onto the patch's
+triangles, which lie on juncture's networks.
+
+Refinement splits boundary edges that new points would encroach. A split point is made once,
+on the 3-D edge at the same fraction, and every patch that has the edge (the neighbour across
+a seam, the other side of a cut) takes it in the next round; after ``ROUNDS`` refining rounds
+a patch that still receives points is triangulated without refinement, and a patch that
+cannot be charted keeps its triangles and takes split points as fans. So the seams stay
+bit-identical and the surface closed, by construction.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .chart import disc, finder, locate, lscm, patch_edges
+
+__all__ = ["remesh", "MIN_ANGLE", "ROUNDS"]
+
+#: Default smallest angle [deg] the charts are refined to.
+MIN_ANGLE = 25.0
+#: Triangulation rounds; the last three do not refine (no new seam points).
+ROUNDS = 12
+#: Default largest distance of a triangle's centre from the surface, share of the size.
+TOLERANCE = 1e-4
+#: Default largest turn [deg] of the surface under one new triangle.
+TURN = 12.0
+#: Points refinement may add to a chart in all, per point it had (a thin trailing edge's
+#: wedge would take points without end).
+BUDGET = 30
+#: A triangle smaller than this share of the input triangle under it is not split again.
+SMALL = 0.05
+#: Refinement makes no edge shorter than this share of a chart's median edge.
+SHORTEST = 0.02
+#: Split points closer than this fraction of their edge are one point.
+SAME_T = 1e-6
+_SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
+
+
+@dataclass(eq=False)
+class _Patch:
+    ids: np.ndarray                      # global vertex id of every chart vertex
+    tri: np.ndarray                      # chart triangles (local ids)
+    uv: np.ndarray                       # chart coordinates
+    edges: np.ndarray                    # boundary edges (local ids), in the loop's order
+    component: int
+    surface: int
+    normals: np.ndarray | None = None    # unit normals of the chart triangles (3-D)
+    areas: np.ndarray | None = None      # 3-D areas of the chart triangles
+    size: float = 0.0                    # the patch's extent
+    find: object = None                  # the chart's point locator
+    shortest: float = 0.0                # no edge shorter is made by refinement (chart)
+    extra_uv: list = field(default_factory=list)   # interior points added, chart coords
+    extra_id: list = field(default_factory=list)
+    seen: int = -1                       # split points known at the last triangulation
+    out: np.ndarray | None = None        # current triangles (global ids)
+
+
+class _Splits:
+    """The vertices, growing, and the points added on edges: one id per (edge, fraction),
+    shared by every patch that has the edge."""
+
+    def __init__(self, vertices):
+        self._xyz = np.array(vertices, float)
+        self.n = len(vertices)
+        self.on = {}                     # (a, b) with a < b -> {t: id}, t from a
+
+    def add_vertex(self, p):
+        p = np.atleast_2d(p)
+        if self.n + len(p) > len(self._xyz):
+            grown = np.empty((2 * (self.n + len(p)), 3))
+            grown[:self.n] = self._xyz[:self.n]
+            self._xyz = grown
+        ids = np.arange(self.n, self.n + len(p))
+        self._xyz[ids] = p
+        self.n += len(p)
+        return ids
+
+    def split(self, a, b, t):
+        if a > b:
+            a, b, t = b, a, 1.0 - t
+        got = self.on.setdefault((a, b), {})
+        # Two patches that split one edge at its middle find fractions a few ulps apart.
+        if not any(abs(t - x) < SAME_T for x in got):
+            pa, pb = self._xyz[a], self._xyz[b]
+            got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
+
+    def along(self, a, b):
+        """(fractions from a, ids) of the points on edge (a, b), in order from a."""
+        got = self.on.get((min(a, b), max(a, b)), {})
+        if not got:
+            return np.zeros(0), np.zeros(0, int)
+        t = np.array(sorted(got))
+        ids = np.array([got[x] for x in t])
+        if a > b:
+            t, ids = 1.0 - t[::-1], ids[::-1]
+        return t, ids
+
+    def all(self):
+        return self._xyz[:self.n]
+
+
+def _patches(mesh):
+    """Connected parts of every surface id, as (global triangle rows)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    out = []
+    for s in np.unique(mesh.surface):
+        rows = np.flatnonzero(mesh.surface == s)
+        t = mesh.triangles[rows]
+        _, und, uses, inverse = patch_edges(t)
+        owner = np.tile(np.arange(len(t)), 3)
+        order = np.argsort(inverse, kind="stable")
+        inv, own = inverse[order], owner[order]
+        same = inv[1:] == inv[:-1]
+        g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
+                       shape=(len(t), len(t)))
+        count, label = connected_components(g, directed=False)
+        out.extend(rows[label == k] for k in range(count))
+    return out
+
+
+def _chart(mesh, rows):
+    """A :class:`_Patch` of the triangles ``rows``, or None if it cannot be charted: flat as
+    it is (holes stay holes), else cut open into a disc (a tube)."""
+    from .assemble import boundary_loops
+
+    t = mesh.triangles[rows]
+    used, local = np.unique(t, return_inverse=True)
+    local = local.reshape(t.shape)
+    for cut in (False, True):
+        got = disc(local, len(used)) if cut else (local, np.arange(len(used)))
+        if got is None:
+            continue
+        tri, parent = got
+        ids = used[parent]
+        loops = boundary_loops(tri)
+        if not loops:
+            continue
+        uv = lscm(mesh.vertices[ids], tri)
+        edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
+        find = None if uv is None or not _embedded(uv, edges) else finder(uv, tri)
+        if find is None:
+            continue
+        p = mesh.vertices[ids][tri]
+        normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+        normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+        return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
+                      int(mesh.surface[rows[0]]), normals,
+                      _area3(p), float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
+                      _shortest(uv, tri))
+    return None
+
+
+def _shortest(uv, tri):
+    """The shortest edge refinement may make in a chart: a share ``SHORTEST`` of its median
+    edge. Near a corner of tiny angle (a thin trailing edge's wedge) refinement stops there
+    instead of grading down without end (and using up the points the rest needs)."""
+    e = np.linalg.norm(uv[tri] - uv[np.roll(tri, 1, axis=1)], axis=2)
+    return SHORTEST * float(np.median(e[e > 0]))
+
+
+def _embedded(uv, edges):
+    """Whether the chart's boundary edges cross nowhere (PythonCDT takes them all)."""
+    import pythoncdt as cdt
+
+    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
+                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
+    try:
+        tri.insert_vertices(np.ascontiguousarray(uv))
+        tri.insert_edges(np.asarray(edges, np.uint32))
+    except (RuntimeError, ValueError):
+        return False
+    return tri.vertices_count() - _SUPER == len(uv)
+
+
+def _inputs(patch, splits):
+    """Chart points (originals, then split points, then interior points), their global ids,
+    the constraint pieces (the boundary with its split points, chart ids) and, per piece,
+    its original edge (global ids) and the fractions of its ends along it."""
+    uv, ids, cons, parent = [patch.uv], [patch.ids], [], []
+    n = len(patch.uv)
+    for i, j in patch.edges.tolist():
+        gi, gj = int(patch.ids[i]), int(patch.ids[j])
+        t, sid = splits.along(gi, gj)
+        chain = [i, *range(n, n + len(t)), j]
+        frac = np.concatenate([[0.0], t, [1.0]])
+        if len(t):
+            uv.append(patch.uv[i] + t[:, None] * (patch.uv[j] - patch.uv[i]))
+            ids.append(sid)
+            n += len(t)
+        cons.extend(zip(chain[:-1], chain[1:]))
+        parent.extend((gi, gj, frac[k], frac[k + 1]) for k in range(len(chain) - 1))
+    if patch.extra_uv:
+        uv.append(np.concatenate(patch.extra_uv))
+        ids.append(np.concatenate(patch.extra_id))
+    return np.concatenate(uv), np.concatenate(ids), np.array(cons, np.uint32), parent
+
+
+def _known(patch, splits):
+    """How many split points lie on the patch's boundary edges."""
+    return sum(len(splits.along(int(patch.ids[i]), int(patch.ids[j]))[0])
+               for i, j in patch.edges.tolist())
+
+
+def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
+    """One constrained (and, with ``refine``, refined) triangulation of a patch's chart.
+
+    New interior points are kept with the patch; new points on boundary pieces are
+    registered in ``splits`` (on their original edge, at the same fraction). Returns True
+    when the triangulation holds every point it must (it is kept in ``patch.out``), False
+    when boundary points were added (triangulate again), None when PythonCDT refuses it.
+    """
+    import pythoncdt as cdt
+
+    uv, ids, cons, parent = _inputs(patch, splits)
+    n = len(uv)
+    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
+                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
+    try:
+        tri.insert_vertices(np.ascontiguousarray(uv))
+        tri.insert_edges(cons)
+        outer = tri.collect_outer_triangles_and_holes()
+        if refine:
+            shortest = patch.shortest
+            budget = max(0, BUDGET * len(patch.uv) + 200 - sum(map(len, patch.extra_uv)))
+            if area is not None:
+                tri.refine_triangles(budget, cdt.RefinementCriterion.LARGEST_AREA, area,
+                                     outer, shortest)
+            tri.refine_triangles(budget, cdt.RefinementCriterion.SMALLEST_ANGLE,
+                                 np.radians(min_angle), outer, shortest)
+        tri.remove_triangles(outer)
+    except (RuntimeError, ValueError):
+        return None
+    if tri.vertices_count() - _SUPER < n:
+        return None
+    pts = tri.vertices_array()
+    pts = np.stack([pts["x"], pts["y"]], 1)[_SUPER:]
+    on_edge = _edge_points(tri, n, cons, parent, uv, pts)
+    for gi, gj, t in on_edge.values():
+        splits.split(gi, gj, t)
+    inner = np.setdiff1d(np.arange(n, len(pts)), np.fromiter(on_edge, int, len(on_edge)))
+    gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
+    if len(inner):
+        xyz = locate(patch.uv, patch.tri, vertices[patch.ids], pts[inner], patch.find)[0]
+        gid[inner] = splits.add_vertex(xyz)
+        patch.extra_uv.append(pts[inner])
+        patch.extra_id.append(gid[inner])
+    if on_edge:
+        return False
+    local = tri.triangles_array()["vertices"].astype(np.int64) - _SUPER
+    boundary = np.zeros(len(pts), bool)
+    boundary[cons.ravel()] = True
+    far = _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary)
+    if len(far):
+        patch.extra_uv.append(far)
+        patch.extra_id.append(splits.add_vertex(
+            locate(patch.uv, patch.tri, vertices[patch.ids], far, patch.find)[0]))
+        return False
+    patch.out = gid[local]
+    return True
+
+
+def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
+    """Chart centroids of the triangles that cut across the patch's surface: the centroid
+    of the flat triangle more than ``tol`` off the surface, or the patch triangles under
+    its corners and centroid turning by more than ``turn`` (cosine); with ``tol`` None only
+    the triangles with every corner on the boundary that leave the surface (at a narrow
+    corner between two seams, the patch across them would make the same triangle); with
+    ``tol`` False none."""
+    if tol is False or not len(local):
+        return np.zeros((0, 2))
+    centre = pts[local].mean(axis=1)
+    on, under = locate(patch.uv, patch.tri, vertices[patch.ids], centre, patch.find)
+    flat = splits.all()[gid[local]].mean(axis=1)
+    dev = np.linalg.norm(on - flat, axis=1)
+    across = boundary[local].all(axis=1) & (dev > 1e-9 * patch.size)
+    if tol is None:
+        return centre[across]
+    far = dev > tol
+    n0 = patch.normals[under]
+    for k in range(3):
+        corner = pts[local[:, k]] + 1e-3 * (centre - pts[local[:, k]])  # inside, not on
+        nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids], corner,
+                                  patch.find)[1]]
+        far |= np.einsum("ij,ij->i", n0, nk) < turn
+    # a triangle far smaller than the input triangle under it is not split again (at a
+    # crease, where every triangle astride it turns, splitting would not end)
+    small = _area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
+    return centre[(far & ~small) | across]
+
+
+def _area3(p):
+    return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+
+
+def _edge_points(tri, n, cons, parent, uv, pts):
+    """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
+    put on constraint pieces, each on the piece's original edge."""
+    piece = {}
+    for k, (a, b) in enumerate(cons.tolist()):
+        piece[(a, b)] = piece[(b, a)] = k
+    out = {}
+    for sub, originals in tri.piece_to_originals_iter():
+        for v in (sub.v1 - _SUPER, sub.v2 - _SUPER):
+            if v < n or v in out:
+                continue
+            e = originals[0]
+            a, b = e.v1 - _SUPER, e.v2 - _SUPER
+            k = piece[(a, b)]
+            a, b = (int(x) for x in cons[k])
+            d = uv[b] - uv[a]
+            s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
+            gi, gj, ta, tb = parent[k]
+            out[v] = (gi, gj, ta + s * (tb - ta))
+    return out
+
+
+def _fans(triangles, splits):
+    """Triangles (global ids) of a patch that keeps its own ``triangles``, with the split
+    points on their edges taken in: a triangle with points on an edge becomes the fan from
+    the opposite corner over them, and each piece again while it has points on an edge."""
+    out, todo = [], [tuple(t) for t in np.asarray(triangles).tolist()]
+    while todo:
+        t = todo.pop()
+        for k in range(3):
+            a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+            ids = splits.along(a, b)[1].tolist()
+            if ids:
+                chain = [a, *ids, b]
+                todo.extend((p, q, c) for p, q in zip(chain[:-1], chain[1:]))
+                break
+        else:
+            out.append(t)
+    return np.array(out, np.int64).reshape(-1, 3)
+
+
+def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
+           turn=TURN):
+    """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
+    triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
+    with ``edge_length``, no triangle larger than an equilateral one of that edge.
+
+    Every vertex of ``mesh`` stays a vertex (intersection and fillet points included); new
+    points lie on its triangles. A new triangle's centre lies within ``tolerance`` times the
+    mesh's size of them, and the input triangles under its corners and centre turn by no
+    more than ``turn`` degrees (so it spans no more of a curved body's facets than the
+    networks' own spacing). See the module docstring for how seams stay shared.
+    """
+    from ..errors import GeometryError
+    from .assemble import SurfaceMesh
+
+    splits = _Splits(np.asarray(mesh.vertices, float))
+    charted, kept = [], []
+    for rows in _patches(mesh):
+        patch = _chart(mesh, rows)
+        (charted if patch is not None else kept).append(patch if patch is not None else rows)
+    size = float(np.ptp(mesh.vertices, axis=0).max())
+    tol = None if tolerance is None else tolerance * size
+    for rnd in range(ROUNDS):
+        # refine and split for shape; then only points inside (no seam points), the last
+        # round taking what it gets
+        refine = rnd < ROUNDS - 3
+        rule = tol if refine else (None if rnd < ROUNDS - 1 else False)
+        for patch in charted:
+            known = _known(patch, splits)
+            if patch.out is not None and patch.seen == known:
+                continue
+            area = _area(patch, mesh.vertices, edge_length)
+            done = _triangulate(patch, splits, mesh.vertices, refine, min_angle, area, rule,
+                                np.cos(np.radians(turn)))
+            if done is None:
+                raise GeometryError(f"the chart of {mesh.surfaces[patch.surface]} could "
+                                    "not be triangulated")
+            patch.seen = known if done else -1
+    tris, comp, surf = [], [], []
+    for patch in charted:
+        if patch.out is None or patch.seen != _known(patch, splits):
+            raise GeometryError(f"{mesh.surfaces[patch.surface]} was not triangulated with "
+                                "its seam points")
+        tris.append(patch.out)
+        comp.append(np.full(len(patch.out), patch.component))
+        surf.append(np.full(len(patch.out), patch.surface))
+    for rows in kept:
+        t = _fans(mesh.triangles[rows], splits)
+        tris.append(t)
+        comp.append(np.full(len(t), mesh.component[rows[0]]))
+        surf.append(np.full(len(t), mesh.surface[rows[0]]))
+    return SurfaceMesh(splits.all(), np.concatenate(tris), np.concatenate(comp),
+                       np.concatenate(surf), mesh.components, mesh.surfaces, mesh.open_loops)
+
+
+def _area(patch, vertices, edge_length):
+    """The chart area of an equilateral triangle of ``edge_length`` on the surface (at the
+    chart's median scale)."""
+    if edge_length is None:
+        return None
+    p = vertices[patch.ids][patch.tri]
+    flat = patch.uv[patch.tri]
+    a3 = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    e1, e2 = flat[:, 1] - flat[:, 0], flat[:, 2] - flat[:, 0]
+    a2 = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0])
+    return float(np.sqrt(3.0) / 4.0 * edge_length ** 2 / np.median(a3 / a2))

@@ -1,0 +1,185 @@
+"""Re-triangulation for quality: closed and exact as assembled, with good angles.
+
+Oracles: trimesh (watertight, winding), the exact-predicate check, the assembled surface's
+own vertices (kept bit for bit), an independent point-to-triangle distance, and analytic
+charts (a flat strip, a cylinder) for the conformal flattening.
+"""
+
+import warnings
+
+import numpy as np
+import pytest
+import trimesh
+
+import juncture as jc
+from juncture.surface.assemble import SurfaceMesh, assemble, quality
+from juncture.surface.chart import disc, locate, lscm
+from juncture.surface.check import check_mesh
+from juncture.surface.quality import triangle_angles
+from juncture.surface.remesh import remesh
+from tests.support import DATA, EXAMPLE_DECK
+
+GENERATED = sorted((DATA / "generated").glob("*.inp"))
+
+
+def _geo(deck, **opts):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.complete(jc.read(deck), **opts)
+
+
+@pytest.fixture(scope="module")
+def transport():
+    assembled = assemble(_geo(EXAMPLE_DECK))
+    return assembled, remesh(assembled)
+
+
+def _grid(n, m, f):
+    u, v = np.meshgrid(np.linspace(0, 1, n), np.linspace(0, 1, m), indexing="ij")
+    pts = f(u, v).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(n - 1), np.arange(m - 1), indexing="ij")
+    a, b = (i * m + j).ravel(), ((i + 1) * m + j).ravel()
+    c, d = b + 1, a + 1
+    return pts, np.concatenate([np.stack([a, b, c], 1), np.stack([a, c, d], 1)])
+
+
+def test_lscm_of_a_flat_strip_is_an_isometry():
+    pts, tri = _grid(6, 4, lambda u, v: np.stack([3 * u, v, 0 * u], -1))
+    uv = lscm(pts, tri)
+    d3 = np.linalg.norm(pts[:, None] - pts[None], axis=2)
+    d2 = np.linalg.norm(uv[:, None] - uv[None], axis=2)
+    assert np.allclose(d2, d3, atol=1e-9)
+
+
+def test_a_tube_is_cut_into_a_disc_and_unrolled():
+    """A faceted cylinder (seam points shared): one cut, one boundary loop, and a chart that
+    unrolls it exactly (its flat quads make it developable: every edge keeps its length)."""
+    n, m = 9, 25
+
+    def f(u, v):
+        th = 2 * np.pi * v
+        return np.stack([4 * u, np.cos(th), np.sin(th)], -1)
+    pts, tri = _grid(n, m, f)
+    seam = np.arange(n) * m + (m - 1)
+    tri = np.where(np.isin(tri, seam), tri - (m - 1), tri)   # close the tube
+    used, local = np.unique(tri, return_inverse=True)
+    local = local.reshape(tri.shape)
+    got = disc(local, len(used))
+    assert got is not None
+    cut, parent = got
+    assert len(parent) == len(used) + n                     # one line duplicated
+    uv = lscm(pts[used][parent], cut)
+    assert uv is not None
+    p3 = pts[used][parent]
+    for k in range(3):
+        a, b = cut[:, k], cut[:, (k + 1) % 3]
+        assert np.allclose(np.linalg.norm(uv[a] - uv[b], axis=1),
+                           np.linalg.norm(p3[a] - p3[b], axis=1), atol=1e-9)
+
+
+def test_locate_is_barycentric_on_the_corners():
+    pts, tri = _grid(3, 3, lambda u, v: np.stack([u, v, u * v], -1))
+    uv = pts[:, :2]
+    q = np.array([[0.25, 0.25], [0.7, 0.1], [1.0, 1.0]])
+    xyz, which = locate(uv, tri, pts, q)
+    assert np.allclose(xyz[:, :2], q)
+    assert (which >= 0).all()
+
+
+def test_the_transport_keeps_every_vertex_closed_and_gets_good_angles(transport):
+    assembled, better = transport
+    n = len(assembled.vertices)
+    assert np.array_equal(better.vertices[:n], assembled.vertices)      # bit for bit
+    assert np.isin(np.unique(assembled.triangles), better.triangles).all()
+    report = check_mesh(better.vertices, better.triangles)
+    assert report.ok, report.failures()
+    tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    smallest = triangle_angles(better.vertices, better.triangles).min(axis=1)
+    # >= 5 deg is the aim; about ten triangles, where the wing root's leading edge wraps
+    # over the chart's flat facets and at the tips' thin trailing edges, stay between 2 and
+    # 5 deg (see README, "Triangle quality")
+    assert smallest.min() >= 2.0
+    assert np.mean(smallest >= 5.0) >= 0.999
+    assert np.mean(smallest >= 20.0) >= 0.97
+    before = triangle_angles(assembled.vertices, assembled.triangles).min(axis=1)
+    assert np.mean(before >= 20.0) < 0.5                                 # it was needed
+    # the flat triangles cut the curved networks' facets by at most the tolerance's sag
+    assert better.volume() == pytest.approx(assembled.volume(), rel=5e-3)
+    assert better.volume() < assembled.volume()
+    assert set(better.components) == set(assembled.components)
+
+
+def _distance_on_triangles(q, p):
+    """Distance of a point q (3,) to the nearest of the triangles p (t, 3, 3) whose plane it
+    projects into inside the triangle (an independent plane-and-barycentric test)."""
+    a, b, c = p[:, 0], p[:, 1], p[:, 2]
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    d = np.einsum("ij,ij->i", q - a, n)
+    foot = q - d[:, None] * n
+    inside = np.ones(len(p), bool)
+    for u, v in ((a, b), (b, c), (c, a)):
+        inside &= np.einsum("ij,ij->i", np.cross(v - u, foot - u), n) >= -1e-9
+    return np.abs(d[inside]).min() if inside.any() else np.inf
+
+
+def test_new_points_lie_on_the_assembled_surface(transport):
+    assembled, better = transport
+    new = better.vertices[len(assembled.vertices):]
+    rng = np.random.default_rng(3)
+    pick = new[rng.choice(len(new), 60, replace=False)]
+    p = assembled.vertices[assembled.triangles]
+    size = np.ptp(assembled.vertices, axis=0).max()
+    worst = max(_distance_on_triangles(q, p) for q in pick)
+    assert worst < 1e-12 * size
+
+
+def test_an_edge_length_bounds_the_triangles():
+    assembled = assemble(_geo(DATA / "generated" / "high_wing_fin_canards_tail.inp"))
+    h = 0.02 * np.ptp(assembled.vertices, axis=0).max()
+    better = remesh(assembled, edge_length=h)
+    assert check_mesh(better.vertices, better.triangles).ok
+    area = better.areas()
+    assert np.quantile(area, 0.99) <= 2.0 * np.sqrt(3) / 4 * h ** 2
+    coarse = remesh(assembled)
+    assert len(better.triangles) > len(coarse.triangles)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("deck", GENERATED, ids=[p.stem for p in GENERATED])
+def test_generated_airplanes_get_good_angles(deck):
+    surface = jc.mesh(_geo(deck))
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
+    assert np.mean(smallest >= 20.0) >= 0.9     # thin trailing-edge wedges stay thin
+
+
+def test_a_failed_re_triangulation_falls_back_with_a_warning(monkeypatch, transport):
+    assembled, _ = transport
+
+    def broken(*args, **kwargs):
+        raise jc.GeometryError("no chart")
+    monkeypatch.setattr("juncture.surface.remesh.remesh", broken)
+    with pytest.warns(jc.JunctureWarning, match="no chart"):
+        kept, report = quality(assembled)
+    assert kept is assembled and report is None
+
+
+def test_min_angle_zero_keeps_the_networks_triangles():
+    geo = _geo(GENERATED[0])
+    plain = jc.mesh(geo, min_angle=0)
+    assert isinstance(plain, SurfaceMesh)
+    assert np.array_equal(plain.triangles, assemble(geo).triangles)
+
+
+def test_the_transport_with_a_fillet_and_keep_area_gets_good_angles(transport):
+    """keep_area: the re-triangulated airplane with its fillets encloses what the sharp one
+    does (both lose the same sag to the flat triangles)."""
+    surface = jc.mesh(_geo(EXAMPLE_DECK, fillet="cubic", keep_area=True))
+    assert surface.volume() == pytest.approx(transport[1].volume(), rel=1e-3)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
+    assert np.mean(smallest >= 20.0) >= 0.97
