@@ -324,17 +324,17 @@ def _imprint_all(geometry, vertices, triangles, component, surface, components):
     by_host = {}
     for host, loop in footprints(geometry, vertices, triangles, component, components):
         by_host.setdefault(host, []).append(loop)
-    cuts = [(host, cut) for host, loops in by_host.items()
-            for cut in imprint_many(vertices, triangles, component == host, loops)]
+    cuts = [cut for host, loops in by_host.items()
+            for cut in imprint_many(vertices, triangles, np.isin(component, host), loops)]
     # Every cut is planned on the triangles as assembled; hosts differ or regions are
     # disjoint, so removing them all at once is safe.
     keep = np.ones(len(triangles), bool)
-    for _, (removed, _) in cuts:
+    for removed, _ in cuts:
         keep[removed] = False
     new_tri, new_comp, new_surf = [triangles[keep]], [component[keep]], [surface[keep]]
-    for host, (removed, new) in cuts:
+    for removed, new in cuts:
         new_tri.append(new)
-        new_comp.append(np.full(len(new), host))
+        new_comp.append(np.full(len(new), np.bincount(component[removed]).argmax()))
         new_surf.append(np.full(len(new), np.bincount(surface[removed]).argmax()))
     return np.concatenate(new_tri), np.concatenate(new_comp), np.concatenate(new_surf)
 
