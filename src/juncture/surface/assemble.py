@@ -26,7 +26,7 @@ import numpy as np
 from .seams import split_seams
 
 __all__ = ["SurfaceMesh", "assemble", "mesh", "boundary_loops", "simple_loops", "cap_polygon",
-           "strip_cap"]
+           "strip_cap", "overlapping_regions"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -396,6 +396,46 @@ def assemble(geometry, mirror=True, cap=True):
                        tuple(open_loops))
 
 
+def overlapping_regions(geometry):
+    """One line per pair of horizontal surfaces (wing, canards, tails) whose intersections
+    with the same body overlap in x, or [].
+
+    The fuselage's upper and lower blocks (TM-4607) are bounded by one region after another
+    along the body: two regions side by side over the same stations (a canard whose root
+    runs on over the wing's) leave the body between them without a layout, and the surfaces
+    usually cross each other there too.
+    """
+    comps = {c.name: c for c in getattr(geometry, "configuration", None) or ()}
+    spans = {}
+    for name, pts in geometry.intersections.items():
+        a, rest = name.split("/", 1)
+        host = rest.rsplit(" ", 1)[0]
+        if getattr(comps.get(a), "span_axis", None) != 1:
+            continue
+        p = np.asarray(pts, float)
+        x = p[np.all(np.isfinite(p), axis=1), 0]
+        if x.size:
+            lo, hi = spans.setdefault(host, {}).get(a, (np.inf, -np.inf))
+            spans[host][a] = (min(lo, float(x.min())), max(hi, float(x.max())))
+    out = []
+    for host, by in spans.items():
+        names = sorted(by, key=lambda n: by[n][0])
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                (la, ha), (lb, hb) = by[a], by[b]
+                if lb < ha and la < hb:
+                    out.append(f"{a} and {b} meet {host} over the same stations (x {la:.6g} to "
+                               f"{ha:.6g} and {lb:.6g} to {hb:.6g}): the fuselage layout needs "
+                               f"one after the other; move {_smaller(a, b, by)} clear of the "
+                               f"other in x")
+    return out
+
+
+def _smaller(a, b, spans):
+    """Of two region names, the one with the shorter span (the one to move)."""
+    return a if spans[a][1] - spans[a][0] < spans[b][1] - spans[b][0] else b
+
+
 def mesh(geometry, mirror=True, cap=True, check=True):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
@@ -421,6 +461,10 @@ def mesh(geometry, mirror=True, cap=True, check=True):
             failures.insert(0, f"{len(surface.open_loops)} open boundary loops (seams whose "
                                "two sides do not carry the same points)")
         if failures:
+            overlap = overlapping_regions(geometry)
+            if overlap:  # the cause, in the user's terms, before what it leads to
+                raise GeometryError("the completed surface is not closed and valid: "
+                                    + "; ".join(overlap) + f" ({failures[0]})")
             raise GeometryError("the completed surface is not closed and valid: "
                                 + "; ".join(failures))
     return surface
