@@ -178,6 +178,18 @@ def cap_polygon(uv):
     return np.array(out, int)
 
 
+def _cap(uv):
+    """Triangles of a planar loop: the constrained Delaunay triangulation of the polygon
+    (collinear points along a flat side of a base give no zero-area triangle, which ear
+    clipping's fallback fan did, crossing the body there), else :func:`cap_polygon`."""
+    from .plane import constrained_triangles
+
+    tri = constrained_triangles(uv, [list(range(len(uv)))])
+    if tri is None or len(tri) != len(uv) - 2:
+        return cap_polygon(uv)
+    return tri
+
+
 def _inside(p, a, b, c, sgn):
     def side(u, v):
         return sgn * ((v[0] - u[0]) * (p[:, 1] - u[1]) - (v[1] - u[1]) * (p[:, 0] - u[0]))
@@ -301,7 +313,7 @@ def _caps(vertices, triangles, tol):
                 caps.append(strip)
                 where.append(loop[0])
             continue
-        tri = loop[cap_polygon((pts - c) @ axes.T)]
+        tri = loop[_cap((pts - c) @ axes.T)]
         # The cap runs against the loop: flip where it runs with it.
         if _runs_with(tri, loop):
             tri = tri[:, ::-1]
