@@ -32,7 +32,7 @@ __version__ = "0.1.0"
 # name -> module that defines it, imported on first access
 _LAZY = {"read": ".io", "write": ".io", "complete": ".completion",
          "CompleteOptions": ".options", "Geometry": ".geometry", "sweep": ".study",
-         "mesh": ".surface.assemble"}
+         "mesh": ".surface.pipeline"}
 
 __all__ = [
     "read",

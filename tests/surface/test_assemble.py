@@ -141,3 +141,19 @@ def test_a_pinched_loop_is_split_into_loops_that_pass_each_vertex_once():
     edges = {(a, b) for p in parts for a, b in zip(p, np.roll(p, -1))}
     assert edges == set(zip(loop, np.roll(loop, -1)))   # the same directed edges
     assert [tuple(p) for p in simple_loops([4, 5, 6])] == [(4, 5, 6)]
+
+
+def test_a_closed_pod_tail_off_the_origin_is_one_point():
+    """A pod whose radius closes to 0 at its last station, placed where origin + x does not
+    round-trip (27.6583 - 19.534 != 8.1243 in floating point): its last section is one point
+    bit for bit, not a ring of points an ulp apart whose cap crosses the pod."""
+    from juncture.model import CircularBody
+
+    pod = CircularBody("pod 1", np.array([0.0, 2.0, 6.0, 8.1243]),
+                       np.array([0.9, 1.1, 0.6, 0.0]), origin=(19.534, 8.07, -3.168),
+                       mirrored=True)
+    x_end = pod.x_global[-1]
+    assert x_end - pod.origin[0] != pod.x[-1]              # the case this is about
+    ring = pod.point(np.full(37, x_end), np.linspace(0.5 * np.pi, 2.5 * np.pi, 37))
+    assert len(np.unique(ring + 0.0, axis=0)) == 1
+    assert pod.radius_at(x_end) == 0.0

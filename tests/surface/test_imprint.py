@@ -132,3 +132,51 @@ def test_footprints_whose_regions_meet_are_cut_together():
     base = sum(0.5 * abs(np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1]))
                for _, _, r in parts)
     assert report.volume == pytest.approx(16.0 + base, rel=1e-12)
+
+
+def test_a_footprint_under_slivers_whose_corners_are_all_far_away():
+    """A wing given by root and tip only is one strip of slivers that run across the whole
+    span, skewed: a footprint in the middle lies under slivers none of whose corners, nor
+    centres, come near it. Every one it crosses is cut."""
+    # Top face z = 0 of a solid 100 long across, made of long skewed slivers 2 wide.
+    n = 21
+    xs = np.linspace(0.0, 40.0, n)
+    lo = np.stack([xs, np.zeros(n), np.zeros(n)], 1)
+    hi = np.stack([xs + 30.0, np.full(n, 100.0), np.zeros(n)], 1)
+    top_p = np.concatenate([lo, hi])
+    i = np.arange(n - 1)
+    top_t = np.concatenate([np.stack([i, i + 1, n + i + 1], 1), np.stack([i, n + i + 1, n + i], 1)])
+    # The rest of a closed solid: the prism under that face, its side walls fanned.
+    bot_p = top_p - [0.0, 0.0, 1.0]
+    pts = np.concatenate([top_p, bot_p])
+    m = 2 * n
+    bot_t = top_t[:, ::-1] + m
+    ring = np.r_[np.arange(n), 2 * n - 1 - np.arange(n)]          # round the face's edge
+    a, b = ring, np.roll(ring, -1)
+    walls = np.concatenate([np.stack([b, a, a + m], 1), np.stack([b, a + m, b + m], 1)])
+    pp, pt, foot = _prism((38.0, 60.0), 1.5, 1.0, 11, 0.3)
+    vertices, inverse = _merge(np.concatenate([pts, pp]))
+    box_t = np.concatenate([top_t, bot_t, walls])
+    triangles = inverse[np.concatenate([box_t, pt + len(pts)])]
+    host = np.r_[np.ones(len(box_t), bool), np.zeros(len(pt), bool)]
+    loop = inverse[len(pts) + np.arange(11)]
+    base = check_mesh(vertices, inverse[box_t])
+    assert base.ok, base.failures()
+    removed, new = imprint(vertices, triangles, host, loop)
+    keep = np.ones(len(triangles), bool)
+    keep[removed] = False
+    report = check_mesh(vertices, np.concatenate([triangles[keep], new]))
+    assert report.ok, report.failures()
+    x, y = foot[:, 0], foot[:, 1]
+    area = 0.5 * abs(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+    assert report.volume == pytest.approx(base.volume + area, rel=1e-12)
+
+
+def test_the_host_of_a_footprint_on_the_four_block_layout_is_both_wing_body_blocks():
+    from juncture.surface.imprint import hosts_of
+
+    comps = ("body", "wing-body upper", "wing-body lower", "pod 1", "fin 1")
+    assert hosts_of("wing", comps) == (1, 2)
+    assert hosts_of("body", comps) == (0, 1, 2)
+    assert hosts_of("pod 1", comps) == (3,)
+    assert hosts_of("wing", ("body", "wing", "pod 1")) == (1,)

@@ -130,3 +130,26 @@ def test_the_transport_with_a_fillet_closes(fillet, keep_area):
         assert surface.volume() == pytest.approx(sharp, rel=1e-3)
     else:
         assert surface.volume() > sharp
+
+
+def test_regions_over_the_same_stations_are_refused_by_name():
+    """A tail whose root runs on over the wing's on the fuselage (tests/data/generated/
+    refused): the split fuselage has no layout between them, so mesh refuses in one line
+    that names both surfaces, the stations and what to move."""
+    deck = DATA / "generated" / "refused" / "tail_root_overlaps_wing_root.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck), fillet=None)
+    # Independently: the wing's and the tail's lines on the body overlap in x.
+    def span(a):
+        x = np.concatenate([np.asarray(p)[np.all(np.isfinite(p), axis=1), 0]
+                            for n, p in geo.intersections.items() if n.startswith(a + "/body")])
+        return x.min(), x.max()
+    (wl, wh), (tl, th) = span("wing"), span("tail 1")
+    assert tl < wh and wl < th
+    with pytest.raises(jc.GeometryError) as err:
+        jc.mesh(geo)
+    msg = str(err.value)
+    assert "\n" not in msg
+    assert "wing and tail 1 meet body over the same stations" in msg
+    assert "move tail 1" in msg

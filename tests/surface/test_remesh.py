@@ -12,9 +12,10 @@ import pytest
 import trimesh
 
 import juncture as jc
-from juncture.surface.assemble import SurfaceMesh, assemble, quality
+from juncture.surface.assemble import SurfaceMesh, assemble
 from juncture.surface.chart import disc, locate, lscm
 from juncture.surface.check import check_mesh
+from juncture.surface.pipeline import quality
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
 from tests.support import DATA, EXAMPLE_DECK

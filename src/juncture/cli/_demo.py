@@ -73,7 +73,7 @@ def _closed_mesh(geo, out, written):
     """mesh.stl, the completed airplane as one closed surface, and its enclosed solid's
     mass properties; None (with a line saying why) where it does not close."""
     from ..errors import GeometryError
-    from ..surface.assemble import mesh
+    from ..surface.pipeline import mesh
     from ..surface.write import write_mesh
 
     try:

@@ -40,8 +40,9 @@ def run(args, progress):
     import numpy as np
 
     from ..completion import complete
-    from ..surface.assemble import assemble, quality
+    from ..surface.assemble import assemble
     from ..surface.check import check_mesh
+    from ..surface.pipeline import quality
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration

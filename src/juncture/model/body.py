@@ -267,16 +267,32 @@ class CircularBody:
                                            + max(abs(float(self.x[0])), abs(float(self.x[-1]))))
         return (xq >= self.x[0] - tol) & (xq <= self.x[-1] + tol)
 
+    def _local(self, x):
+        """Global stations x as local ones; one within the rounding of ``origin + x[k]`` of a
+        station is that station exactly.
+
+        ``origin[0] + x[k]`` taken back to local may land an ulp or two off ``x[k]``; where
+        the radius is zero there (a closed nose or tail), the cubic piece read an ulp away
+        gives 1e-15 instead of 0, and the closing section became a ring of distinct points
+        an ulp apart instead of one point.
+        """
+        xq = np.asarray(x, float) - self.origin[0]
+        st = self.x
+        k = np.clip(np.searchsorted(st, xq), 1, st.size - 1)
+        near = np.where(np.abs(xq - st[k - 1]) <= np.abs(st[k] - xq), st[k - 1], st[k])
+        tol = 4.0 * np.finfo(float).eps * (abs(float(self.origin[0])) + np.abs(near))
+        return np.where(np.abs(xq - near) <= tol, near, xq)
+
     def radius_at(self, x, derivative=0):
         """Radius r(x) (or its x-derivative) at global stations; 0 outside the body."""
-        xq = np.asarray(x, float) - self.origin[0]
+        xq = self._local(x)
         val = self._interp(xq, derivative)[..., 0]
         inside = self._on_body(xq)
         return np.where(inside, np.maximum(val, 0.0) if derivative == 0 else val, 0.0)
 
     def center_at(self, x, derivative=0):
         """(..., 2): y and z of the section centre (or their x-derivatives) at global x."""
-        xq = np.asarray(x, float) - self.origin[0]
+        xq = self._local(x)
         zc = self._interp(xq, derivative)[..., 1] + (self.origin[2] if derivative == 0 else 0.0)
         yc = np.full_like(zc, self.origin[1] if derivative == 0 else 0.0)
         return np.stack([yc, zc], axis=-1)
@@ -286,7 +302,7 @@ class CircularBody:
 
         The same values as :meth:`center_at` and :meth:`radius_at` (radius 0 outside the body).
         """
-        xq = np.asarray(x, float) - self.origin[0]
+        xq = self._local(x)
         rc = self._interp(xq)
         inside = self._on_body(xq)
         r = np.where(inside, np.maximum(rc[..., 0], 0.0), 0.0)

@@ -25,8 +25,8 @@ import numpy as np
 
 from .seams import split_seams
 
-__all__ = ["SurfaceMesh", "assemble", "mesh", "quality", "boundary_loops", "simple_loops",
-           "cap_polygon", "strip_cap"]
+__all__ = ["SurfaceMesh", "assemble", "boundary_loops", "simple_loops", "cap_polygon",
+           "strip_cap"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -178,6 +178,18 @@ def cap_polygon(uv):
     return np.array(out, int)
 
 
+def _cap(uv):
+    """Triangles of a planar loop: the constrained Delaunay triangulation of the polygon
+    (collinear points along a flat side of a base give no zero-area triangle, which ear
+    clipping's fallback fan did, crossing the body there), else :func:`cap_polygon`."""
+    from .plane import constrained_triangles
+
+    tri = constrained_triangles(uv, [list(range(len(uv)))])
+    if tri is None or len(tri) != len(uv) - 2:
+        return cap_polygon(uv)
+    return tri
+
+
 def _inside(p, a, b, c, sgn):
     def side(u, v):
         return sgn * ((v[0] - u[0]) * (p[:, 1] - u[1]) - (v[1] - u[1]) * (p[:, 0] - u[0]))
@@ -301,7 +313,7 @@ def _caps(vertices, triangles, tol):
                 caps.append(strip)
                 where.append(loop[0])
             continue
-        tri = loop[cap_polygon((pts - c) @ axes.T)]
+        tri = loop[_cap((pts - c) @ axes.T)]
         # The cap runs against the loop: flip where it runs with it.
         if _runs_with(tri, loop):
             tri = tri[:, ::-1]
@@ -324,17 +336,17 @@ def _imprint_all(geometry, vertices, triangles, component, surface, components):
     by_host = {}
     for host, loop in footprints(geometry, vertices, triangles, component, components):
         by_host.setdefault(host, []).append(loop)
-    cuts = [(host, cut) for host, loops in by_host.items()
-            for cut in imprint_many(vertices, triangles, component == host, loops)]
+    cuts = [cut for host, loops in by_host.items()
+            for cut in imprint_many(vertices, triangles, np.isin(component, host), loops)]
     # Every cut is planned on the triangles as assembled; hosts differ or regions are
     # disjoint, so removing them all at once is safe.
     keep = np.ones(len(triangles), bool)
-    for _, (removed, _) in cuts:
+    for removed, _ in cuts:
         keep[removed] = False
     new_tri, new_comp, new_surf = [triangles[keep]], [component[keep]], [surface[keep]]
-    for host, (removed, new) in cuts:
+    for removed, new in cuts:
         new_tri.append(new)
-        new_comp.append(np.full(len(new), host))
+        new_comp.append(np.full(len(new), np.bincount(component[removed]).argmax()))
         new_surf.append(np.full(len(new), np.bincount(surface[removed]).argmax()))
     return np.concatenate(new_tri), np.concatenate(new_comp), np.concatenate(new_surf)
 
@@ -394,76 +406,3 @@ def assemble(geometry, mirror=True, cap=True):
             surface = np.concatenate([surface, np.full(len(tri), surfaces.index(name))])
     return SurfaceMesh(vertices, triangles, component, surface, components, surfaces,
                        tuple(open_loops))
-
-
-def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
-         tolerance=1e-4):
-    """One closed, consistently oriented triangulated surface of a completed geometry.
-
-    ``juncture.mesh(geo)``: :func:`assemble` (both halves unless ``mirror=False``, planar
-    open loops capped unless ``cap=False``), then :func:`juncture.surface.remesh.remesh`
-    (triangles of at least ``min_angle`` degrees where the corners allow, at most
-    ``tolerance`` times the airplane's size off its networks, no larger than equilateral
-    triangles of ``edge_length``; ``min_angle=0`` keeps the networks' own triangles), then,
-    with ``check``, every check of :func:`juncture.surface.check.check_mesh` (closed,
-    manifold, oriented, positive volume, no self-intersection under exact predicates): a
-    surface that fails one is refused with a :class:`~juncture.errors.GeometryError` that
-    says what fails, in one line.
-
-    Returns
-    -------
-    SurfaceMesh
-        ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
-        ``wetted_area()``.
-    """
-    from .check import check_mesh
-
-    surface = assemble(geometry, mirror=mirror, cap=cap)
-    if check:
-        _refuse(surface, check_mesh(surface.vertices, surface.triangles).failures())
-    if min_angle:
-        surface, _ = quality(surface, min_angle, edge_length, tolerance, check)
-    return surface
-
-
-def _refuse(surface, failures):
-    from ..errors import GeometryError
-
-    if surface.open_loops:
-        failures.insert(0, f"{len(surface.open_loops)} open boundary loops (seams whose "
-                           "two sides do not carry the same points)")
-    if failures:
-        raise GeometryError("the completed surface is not closed and valid: "
-                            + "; ".join(failures))
-
-
-def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True):
-    """(surface, report): ``surface`` re-triangulated by
-    :func:`juncture.surface.remesh.remesh` and, with ``check``, its
-    :func:`~juncture.surface.check.check_mesh` report; the surface as it was (report None),
-    with a :class:`~juncture.errors.JunctureWarning`, where the re-triangulation fails or
-    its checks do. An open surface is returned as it is."""
-    import warnings
-
-    from ..errors import GeometryError, JunctureWarning
-    from .check import check_mesh
-    from .remesh import remesh
-
-    if surface.open_loops:
-        return surface, None
-    try:
-        better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
-                        tolerance=tolerance)
-    except GeometryError as exc:
-        failures = [str(exc)]
-    else:
-        if not check:
-            return better, None
-        report = check_mesh(better.vertices, better.triangles)
-        failures = report.failures()
-        if not failures:
-            return better, report
-    warnings.warn("the re-triangulation for triangle quality was not kept ("
-                  + "; ".join(failures) + "): the networks' own triangles are used",
-                  JunctureWarning, stacklevel=3)
-    return surface, None

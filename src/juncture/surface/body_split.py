@@ -95,6 +95,11 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
                                   + [r.x for r in upper_regions] + [f.x for f in fins]))
     xl = np.unique(np.concatenate([_kept(xg, lower_regions, bottom)]
                                   + [r.x for r in lower_regions]))
+    # Outside every region the two blocks end on one line (theta_b from the same ends), so
+    # each takes the other's stations there: else a fin's stations on the upper block put
+    # points on that line the lower block does not have (an open seam between them).
+    spans = [(r.x[0], r.x[-1]) for r in (*upper_regions, *lower_regions) if r.x.size]
+    xu, xl = _shared_stations(xu, xl, spans)
     th_u = bounding_curve(xu, upper_regions, x_nose, x_end, side)
     th_l = bounding_curve(xl, lower_regions, x_nose, x_end, side)
     top = np.full(xu.size, top_value)
@@ -116,6 +121,16 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         _end_at_points(up[:, ::-1], xu, [fin], None)
     radial = radial_outward(body)
     return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
+
+
+def _shared_stations(xu, xl, spans):
+    """Upper and lower stations, each with the other's that lie outside every span."""
+    def outside(x):
+        out = np.ones(x.size, bool)
+        for lo, hi in spans:
+            out &= (x < lo) | (x > hi)
+        return x[out]
+    return np.union1d(xu, outside(xl)), np.union1d(xl, outside(xu))
 
 
 def _empty(region, far):

@@ -221,7 +221,10 @@ def add_trace_curves(wing, nets, traces):
         if name not in out or not curves:
             continue
         net = out[name]
-        natural = np.allclose(net[:, 0, 0], np.min(net[:, :, 0], axis=1))  # points LE -> TE?
+        # Points LE -> TE? Each line's trailing edge lies aft of its leading edge (the first
+        # point need not be the line's smallest x: at the root, the intersection line's
+        # second point can lie ahead of its first).
+        natural = bool(np.median(net[:, -1, 0] - net[:, 0, 0]) > 0.0)
         add = [c if natural else c[::-1] for c in curves]
         # An oriented network may run tip to root (orient() reversed it): the body-side line
         # is then its last, and the result is reversed back so the normals stay outward.

@@ -18,7 +18,7 @@ import numpy as np
 
 from .plane import constrained_triangles, distance, frame, inside, is_simple, unit
 
-__all__ = ["imprint", "imprint_many", "footprints"]
+__all__ = ["imprint", "imprint_many", "footprints", "hosts_of"]
 
 #: Host vertices nearer the loop than this share of the local edge length are left out.
 CROWD = 0.1
@@ -31,15 +31,32 @@ def _region(vertices, triangles, cand, uv, loop2, margin):
     corners = t2.reshape(-1, 2)
     hit = inside(corners, loop2) | (distance(corners, loop2) <= margin)
     hit = hit.reshape(-1, 3).any(axis=1)
-    # A loop that lies inside one large triangle.
-    u, v = t2[:, 1] - t2[:, 0], t2[:, 2] - t2[:, 0]
-    w = loop2.mean(axis=0) - t2[:, 0]
-    det = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+    # A loop point inside a triangle (a loop that lies inside one large triangle).
+    u, v = t2[:, None, 1] - t2[:, None, 0], t2[:, None, 2] - t2[:, None, 0]
+    w = np.concatenate([loop2, loop2.mean(axis=0, keepdims=True)])[None] - t2[:, None, 0]
+    det = u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
     with np.errstate(divide="ignore", invalid="ignore"):
-        lam1 = (w[:, 0] * v[:, 1] - w[:, 1] * v[:, 0]) / det
-        lam2 = (u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]) / det
-        hit |= (lam1 >= 0) & (lam2 >= 0) & (lam1 + lam2 <= 1)
+        lam1 = (w[..., 0] * v[..., 1] - w[..., 1] * v[..., 0]) / det
+        lam2 = (u[..., 0] * w[..., 1] - u[..., 1] * w[..., 0]) / det
+        hit |= ((lam1 >= 0) & (lam2 >= 0) & (lam1 + lam2 <= 1)).any(axis=1)
+    # A long sliver that crosses the loop with every corner far from it.
+    hit |= _crossing(t2, loop2)
     return np.flatnonzero(hit)
+
+
+def _crossing(t2, loop2):
+    """(c,) whether an edge of each 2-D triangle (c, 3, 2) crosses an edge of the loop."""
+    a0, a1 = t2, np.roll(t2, -1, axis=1)                       # (c, 3, 2)
+    b0, b1 = loop2, np.roll(loop2, -1, axis=0)                 # (k, 2)
+
+    def orient(p, q, r):
+        return np.sign((q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1])
+                       - (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0]))
+    a0, a1 = a0[:, :, None], a1[:, :, None]                    # (c, 3, 1, 2)
+    d1, d2 = orient(a0, a1, b0[None, None]), orient(a0, a1, b1[None, None])
+    d3, d4 = orient(b0[None, None], b1[None, None], a0), orient(b0[None, None],
+                                                                 b1[None, None], a1)
+    return ((d1 * d2 < 0) & (d3 * d4 < 0)).any(axis=(1, 2))
 
 
 def _under(p, corner, normal):
@@ -148,7 +165,11 @@ def _plan(h_, loop):
     # Facing the loop's side, or degenerate (the zero-width strip between two traced curves
     # that coincide away from a pylon faces nowhere, yet lies under it).
     flat = np.linalg.norm(h_.normal, axis=1) <= 1e-12 * h * h
-    near = np.linalg.norm(h_.corner - origin, axis=2).min(axis=1) <= 2.0 * (size + h)
+    # Near by the triangle's bounding box, not its corners: a long panel (a wing given by
+    # root and tip only) can pass under the loop with every corner far from it.
+    lo, hi = h_.corner.min(axis=1), h_.corner.max(axis=1)
+    gap = np.linalg.norm(np.maximum(np.maximum(lo - origin, origin - hi), 0.0), axis=1)
+    near = gap <= 2.0 * (size + h)
     cand = h_.hid[((unit(h_.normal) @ n > 0.25) | flat) & near]
     if not len(cand):
         return None
@@ -229,12 +250,25 @@ def _cut(h_, loops, n, h, region):
     return region, new
 
 
+def hosts_of(name, components):
+    """Indices of the components that carry the surface of component ``name``: itself, or
+    the blocks it shares with another component (the four-block layout's ``"wing-body
+    upper"`` and ``"wing-body lower"`` carry both the wing and the body)."""
+    out = []
+    for k, c in enumerate(components):
+        head = c.split(" ", 1)[0]
+        if c == name or ("-" in head and name in head.split("-")):
+            out.append(k)
+    return tuple(out)
+
+
 def footprints(geometry, vertices, triangles, component, components):
-    """Loops to imprint: ``[(host component index, loop)]`` for every open boundary loop of a
-    component made (mostly) of its intersection points with another component.
+    """Loops to imprint: ``[(host component indices, loop)]`` for every open boundary loop of
+    a component made (mostly) of its intersection points with another component.
 
     The intersection lines ``"a/b side"`` of ``geometry`` name the standing component ``a``
-    and the host ``b``; their mirror images count for the image half.
+    and the host ``b`` (:func:`hosts_of`: the components that carry ``b``'s surface); their
+    mirror images count for the image half.
     """
     from .assemble import boundary_loops
 
@@ -261,7 +295,8 @@ def footprints(geometry, vertices, triangles, component, components):
                                                                .any(axis=1)])}
         for a, b in set().union(*pairs):
             share = np.mean([(a, b) in s for s in pairs])
-            if share >= 0.5 and owners == {a} and b in components:
-                out.append((components.index(b), loop))
+            hosts = hosts_of(b, components)
+            if share >= 0.5 and owners == {a} and hosts:
+                out.append((hosts, loop))
                 break
     return out

@@ -1,0 +1,134 @@
+"""``juncture.mesh``: the assembled surface, checked, re-triangulated for quality.
+
+:func:`mesh` assembles a completed geometry (:func:`juncture.surface.assemble.assemble`),
+refuses in one line a surface that is not closed and valid (naming the cause in the user's
+terms where it is known: :func:`overlapping_regions`), and re-triangulates it
+(:func:`quality`, :func:`juncture.surface.remesh.remesh`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .assemble import assemble
+
+__all__ = ["mesh", "quality", "overlapping_regions"]
+
+
+def overlapping_regions(geometry):
+    """One line per pair of horizontal surfaces (wing, canards, tails) whose intersections
+    with the same body overlap in x, or [].
+
+    The fuselage's upper and lower blocks (TM-4607) are bounded by one region after another
+    along the body: two regions side by side over the same stations (a canard whose root
+    runs on over the wing's) leave the body between them without a layout, and the surfaces
+    usually cross each other there too.
+    """
+    comps = {c.name: c for c in getattr(geometry, "configuration", None) or ()}
+    spans = {}
+    for name, pts in geometry.intersections.items():
+        a, rest = name.split("/", 1)
+        host = rest.rsplit(" ", 1)[0]
+        if getattr(comps.get(a), "span_axis", None) != 1:
+            continue
+        p = np.asarray(pts, float)
+        x = p[np.all(np.isfinite(p), axis=1), 0]
+        if x.size:
+            lo, hi = spans.setdefault(host, {}).get(a, (np.inf, -np.inf))
+            spans[host][a] = (min(lo, float(x.min())), max(hi, float(x.max())))
+    out = []
+    for host, by in spans.items():
+        names = sorted(by, key=lambda n: by[n][0])
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                (la, ha), (lb, hb) = by[a], by[b]
+                if lb < ha and la < hb:
+                    out.append(f"{a} and {b} meet {host} over the same stations (x {la:.6g} to "
+                               f"{ha:.6g} and {lb:.6g} to {hb:.6g}): the fuselage layout needs "
+                               f"one after the other; move {_smaller(a, b, by)} clear of the "
+                               f"other in x")
+    return out
+
+
+def _smaller(a, b, spans):
+    """Of two region names, the one with the shorter span (the one to move)."""
+    return a if spans[a][1] - spans[a][0] < spans[b][1] - spans[b][0] else b
+
+
+def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
+         tolerance=1e-4):
+    """One closed, consistently oriented triangulated surface of a completed geometry.
+
+    ``juncture.mesh(geo)``: :func:`~juncture.surface.assemble.assemble` (both halves unless
+    ``mirror=False``, planar open loops capped unless ``cap=False``); with ``check``, every
+    check of :func:`juncture.surface.check.check_mesh` (closed, manifold, oriented, positive
+    volume, no self-intersection under exact predicates): a surface that fails one is
+    refused with a :class:`~juncture.errors.GeometryError` that says what fails, in one line.
+    Then :func:`quality` (triangles of at least ``min_angle`` degrees where the corners
+    allow, at most ``tolerance`` times the airplane's size off its networks, no larger than
+    equilateral triangles of ``edge_length``; ``min_angle=0`` keeps the networks' own
+    triangles).
+
+    Returns
+    -------
+    SurfaceMesh
+        ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
+        ``wetted_area()``.
+    """
+    from .check import check_mesh
+
+    surface = assemble(geometry, mirror=mirror, cap=cap)
+    if check:
+        _refuse(geometry, surface, check_mesh(surface.vertices, surface.triangles).failures())
+    if min_angle:
+        surface, _ = quality(surface, min_angle, edge_length, tolerance, check)
+    return surface
+
+
+def _refuse(geometry, surface, failures):
+    """A one-line GeometryError for a surface that fails, the cause first where known."""
+    from ..errors import GeometryError
+
+    if surface.open_loops:
+        failures.insert(0, f"{len(surface.open_loops)} open boundary loops (seams whose "
+                           "two sides do not carry the same points)")
+    if not failures:
+        return
+    overlap = overlapping_regions(geometry)
+    if overlap:  # the cause, in the user's terms, before what it leads to
+        raise GeometryError("the completed surface is not closed and valid: "
+                            + "; ".join(overlap) + f" ({failures[0]})")
+    raise GeometryError("the completed surface is not closed and valid: "
+                        + "; ".join(failures))
+
+
+def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True):
+    """(surface, report): ``surface`` re-triangulated by
+    :func:`juncture.surface.remesh.remesh` and, with ``check``, its
+    :func:`~juncture.surface.check.check_mesh` report; the surface as it was (report None),
+    with a :class:`~juncture.errors.JunctureWarning`, where the re-triangulation fails or
+    its checks do. An open surface is returned as it is."""
+    import warnings
+
+    from ..errors import GeometryError, JunctureWarning
+    from .check import check_mesh
+    from .remesh import remesh
+
+    if surface.open_loops:
+        return surface, None
+    try:
+        better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
+                        tolerance=tolerance)
+    except GeometryError as exc:
+        failures = [str(exc)]
+    else:
+        if not check:
+            return better, None
+        report = check_mesh(better.vertices, better.triangles)
+        failures = report.failures()
+        if not failures:
+            return better, report
+    warnings.warn("the re-triangulation for triangle quality was not kept ("
+                  + "; ".join(failures) + "): the networks' own triangles are used",
+                  JunctureWarning, stacklevel=3)
+    return surface, None

@@ -1,0 +1,45 @@
+"""Traced curves (a pylon's line on the wing) inserted into the wing's networks."""
+
+from types import SimpleNamespace
+
+import numpy as np
+
+from juncture.surface.component_networks import add_trace_curves
+
+
+def _wing_lower(reverse_points):
+    """A swept wing's lower network, n-lines spanwise from the body out, each line LE -> TE
+    (or TE -> LE); at the root the intersection line's second point lies ahead of its
+    first, as it can where the wing meets a narrowing body."""
+    span = np.array([2.0, 6.0, 10.0])
+    f = np.linspace(0.0, 1.0, 6)
+    le, chord = 10.0 + 0.8 * span, 12.0 - 0.5 * span
+    x = le[:, None] + chord[:, None] * f[None, :]
+    x[0, 1] = x[0, 0] - 0.3
+    net = np.stack([x, np.broadcast_to(span[:, None], x.shape), -0.1 * x], axis=-1)
+    return net[:, ::-1] if reverse_points else net
+
+
+def _curve(y):
+    f = np.linspace(0.0, 1.0, 6)
+    x = 10.0 + 0.8 * y + (12.0 - 0.5 * y) * f
+    return np.stack([x, np.full(6, y), -0.1 * x], axis=-1)
+
+
+def _folded_quads(net):
+    """Quads whose two diagonals' chordwise directions disagree: a line reversed against
+    its neighbour."""
+    d = np.diff(net[..., 0], axis=1)                        # along each line
+    return int(np.sum(np.sign(d[1:]) * np.sign(d[:-1]) < 0))
+
+
+def test_a_traced_curve_runs_the_way_the_lines_do_whatever_the_root_line_does():
+    wing = SimpleNamespace(name="w")
+    for reverse in (False, True):
+        net = _wing_lower(reverse)
+        out = add_trace_curves(wing, {"w lower": net}, [("lower", _curve(7.5))])["w lower"]
+        assert out.shape[0] == net.shape[0] + 1
+        # Every line but the root one runs the same way as the input's outboard lines.
+        way = np.sign(net[-1, -1, 0] - net[-1, 0, 0])
+        assert np.all(np.sign(out[1:, -1, 0] - out[1:, 0, 0]) == way)
+        assert _folded_quads(out[1:]) == 0
