@@ -175,6 +175,7 @@ def test_min_angle_zero_keeps_the_networks_triangles():
     assert np.array_equal(plain.triangles, assemble(geo).triangles)
 
 
+@pytest.mark.slow
 def test_the_transport_with_a_fillet_and_keep_area_gets_good_angles(transport):
     """keep_area: the re-triangulated airplane with its fillets encloses what the sharp one
     does (both lose the same sag to the flat triangles)."""
