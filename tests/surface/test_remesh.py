@@ -185,3 +185,22 @@ def test_the_transport_with_a_fillet_and_keep_area_gets_good_angles(transport):
     assert tm.is_watertight and tm.is_winding_consistent
     smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
     assert np.mean(smallest >= 20.0) >= 0.97
+
+
+@pytest.mark.slow
+def test_surfaces_that_cross_when_re_triangulated_keep_their_own_triangles():
+    """A generated airplane (tests/data/generated/README.md) whose pod tip crosses itself
+    when re-triangulated: re-triangulated once more with that pod's triangles kept, the
+    airplane passes every check and keeps good angles elsewhere."""
+    assembled = assemble(_geo(DATA / "generated" / "remesh"
+                              / "pod_tip_crossing_when_re_triangulated.inp"))
+    first = remesh(assembled)
+    assert check_mesh(first.vertices, first.triangles).intersecting_pairs > 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", jc.JunctureWarning)     # no fall-back
+        better, report = quality(assembled)
+    assert report is not None and report.ok
+    tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    smallest = triangle_angles(better.vertices, better.triangles).min(axis=1)
+    assert np.mean(smallest >= 20.0) >= 0.9

@@ -105,30 +105,47 @@ def _refuse(geometry, surface, failures):
 def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True):
     """(surface, report): ``surface`` re-triangulated by
     :func:`juncture.surface.remesh.remesh` and, with ``check``, its
-    :func:`~juncture.surface.check.check_mesh` report; the surface as it was (report None),
-    with a :class:`~juncture.errors.JunctureWarning`, where the re-triangulation fails or
-    its checks do. An open surface is returned as it is."""
+    :func:`~juncture.surface.check.check_mesh` report.
+
+    Where re-triangulated surfaces cross (a pod's tip, curved faster than the new triangles
+    follow), those surfaces keep their own triangles and the rest is re-triangulated again
+    (up to ``RETRIES`` times). Where it still fails, the surface as it was (report None),
+    with a :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
+    """
     import warnings
 
     from ..errors import GeometryError, JunctureWarning
-    from .check import check_mesh
+    from .check import check_mesh, self_intersections
     from .remesh import remesh
 
     if surface.open_loops:
         return surface, None
-    try:
-        better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
-                        tolerance=tolerance)
-    except GeometryError as exc:
-        failures = [str(exc)]
-    else:
+    keep = set()
+    for _ in range(RETRIES + 1):
+        try:
+            better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
+                            tolerance=tolerance, keep=keep)
+        except GeometryError as exc:
+            failures = [str(exc)]
+            break
         if not check:
             return better, None
         report = check_mesh(better.vertices, better.triangles)
         failures = report.failures()
         if not failures:
             return better, report
+        if len(failures) > 1 or not report.intersecting_pairs:
+            break
+        crossing = self_intersections(better.vertices, better.triangles)
+        more = set(better.surface[crossing.ravel()].tolist()) - keep
+        if not more:
+            break
+        keep |= more
     warnings.warn("the re-triangulation for triangle quality was not kept ("
                   + "; ".join(failures) + "): the networks' own triangles are used",
                   JunctureWarning, stacklevel=3)
     return surface, None
+
+
+#: Re-triangulations after the first, each keeping the surfaces that crossed.
+RETRIES = 2

@@ -348,7 +348,7 @@ def _fans(triangles, splits):
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
-           turn=TURN):
+           turn=TURN, keep=()):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -357,7 +357,9 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     points lie on its triangles. A new triangle's centre lies within ``tolerance`` times the
     mesh's size of them, and the input triangles under its corners and centre turn by no
     more than ``turn`` degrees (so it spans no more of a curved body's facets than the
-    networks' own spacing). See the module docstring for how seams stay shared.
+    networks' own spacing). The surfaces in ``keep`` (indices into ``mesh.surfaces``) keep
+    their triangles, taking their neighbours' seam points as fans. See the module docstring
+    for how seams stay shared.
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
@@ -365,7 +367,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     splits = _Splits(np.asarray(mesh.vertices, float))
     charted, kept = [], []
     for rows in _patches(mesh):
-        patch = _chart(mesh, rows)
+        patch = None if mesh.surface[rows[0]] in keep else _chart(mesh, rows)
         (charted if patch is not None else kept).append(patch if patch is not None else rows)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
