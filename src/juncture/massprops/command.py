@@ -9,11 +9,13 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
+
 from ..errors import GeometryError, SpecError
 from .configuration import configuration_mass_properties
 from .spec import evaluate_spec, format_table, load_spec, spec_report_json
 
-__all__ = ["run_massprops", "is_massprops_spec"]
+__all__ = ["run_massprops", "is_massprops_spec", "enclosed_mass_properties"]
 
 
 def is_massprops_spec(path):
@@ -68,6 +70,7 @@ def run_massprops(path, as_json=False, density=None):
     DeckError
         A deck that cannot be read.
     """
+    enclosed = None
     if is_massprops_spec(path):
         if density is not None:
             raise SpecError(f"{path}: a mass-properties spec gives each component its own "
@@ -91,6 +94,46 @@ def run_massprops(path, as_json=False, density=None):
         header = (f"{cfg.title or Path(path).name}: uniform density {rho:g}{note}; "
                   "components integrated as given (overlaps counted in each), mirror images "
                   "included\n")
+        enclosed = enclosed_mass_properties(cfg, rho)
     if as_json:
-        return json.dumps(spec_report_json(total, parts), indent=2) + "\n"
-    return header + format_table(total, parts)
+        out = spec_report_json(total, parts)
+        if enclosed is not None:
+            out["enclosed"] = (enclosed.to_dict() if hasattr(enclosed, "to_dict")
+                               else {"unavailable": enclosed})
+        return json.dumps(out, indent=2) + "\n"
+    return header + format_table(total, parts) + _enclosed_line(enclosed)
+
+
+def enclosed_mass_properties(cfg, density=1.0):
+    """Mass properties of the completed airplane's one closed surface (overlaps counted
+    once: a buried wing root is not counted twice), or the one-line reason it has none.
+
+    The configuration is completed (no fillet) and assembled (:func:`juncture.mesh` with the
+    networks' own triangles), and the solid it encloses integrated exactly
+    (:func:`juncture.massprops.surface_mass_properties`).
+    """
+    import warnings
+
+    from ..completion import complete
+    from ..errors import JunctureError, JunctureWarning
+    from ..surface.pipeline import mesh
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", JunctureWarning)
+            surface = mesh(complete(cfg), min_angle=0)
+    except JunctureError as exc:
+        return str(exc)
+    return surface.mass_properties(density).renamed("enclosed solid")
+
+
+def _enclosed_line(enclosed):
+    if enclosed is None:
+        return ""
+    if isinstance(enclosed, str):
+        return f"enclosed solid: none ({enclosed})\n"
+    cg = ", ".join(f"{c:.6g}" for c in np.where(np.abs(enclosed.cg) > 1e-9, enclosed.cg, 0.0))
+    inertia = ", ".join(f"{enclosed.inertia[i, i]:.6g}" for i in range(3))
+    return (f"enclosed solid (the completed airplane as one closed surface, overlaps counted "
+            f"once): mass {enclosed.mass:.6g}, volume {enclosed.volume:.6g}, CG {cg}; "
+            f"Ixx, Iyy, Izz about the CG {inertia}\n")
