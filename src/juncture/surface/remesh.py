@@ -2,20 +2,22 @@
 
 The assembled surface (:func:`juncture.surface.assemble.assemble`) uses the networks' own
 points: long, thin quads along the span and slivers where seams meet. Each patch (the
-connected part of one network or cap) is cut open into a disc and flattened conformally
-(:mod:`juncture.surface.chart`); its boundary edges become constraints and every vertex it
-has is kept, so intersection and fillet points stay vertices and the seams stay shared. In
-the chart a constrained Delaunay triangulation (PythonCDT) is refined until every triangle's
-smallest angle reaches ``min_angle`` (and, with ``edge_length``, its area that of an
-equilateral triangle of that edge). New interior points are taken back onto the patch's
-triangles, which lie on juncture's networks.
+connected part of one network or cap) is cut open into a disc where it is a tube and
+flattened conformally (:mod:`juncture.surface.chart`); its boundary edges become
+constraints and every vertex it has is kept, so intersection and fillet points stay
+vertices and the seams stay shared. In the chart a constrained Delaunay triangulation
+(PythonCDT) is refined until every triangle's smallest angle reaches ``min_angle`` (and,
+with ``edge_length``, its area that of an equilateral triangle of that edge); triangles that
+cut across a curved surface (centre more than ``tolerance`` off it, or the surface turning
+by more than ``turn`` under them) get their centre as a new point. New interior points are
+taken back onto the patch's triangles, which lie on juncture's networks.
 
 Refinement splits boundary edges that new points would encroach. A split point is made once,
 on the 3-D edge at the same fraction, and every patch that has the edge (the neighbour across
-a seam, the other side of a cut) takes it in the next round; after ``ROUNDS`` refining rounds
-a patch that still receives points is triangulated without refinement, and a patch that
-cannot be charted keeps its triangles and takes split points as fans. So the seams stay
-bit-identical and the surface closed, by construction.
+a seam, the other side of a cut) takes it in the next round. The last rounds of ``ROUNDS``
+do not refine (they add no seam points), and a patch that cannot be charted keeps its
+triangles and takes split points as fans. So the seams stay bit-identical and the surface
+closed, by construction.
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ import numpy as np
 
 from .chart import disc, finder, locate, lscm, patch_edges
 
-__all__ = ["remesh", "MIN_ANGLE", "ROUNDS"]
+__all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 
 #: Default smallest angle [deg] the charts are refined to.
 MIN_ANGLE = 25.0
@@ -300,6 +302,7 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
     # crease, where every triangle astride it turns, splitting would not end)
     small = _area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
     return centre[(far & ~small) | across]
+
 
 
 def _area3(p):
