@@ -47,6 +47,7 @@ SMALL = 0.05
 SHORTEST = 0.02
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
+_NONE = (np.zeros(0), np.zeros(0, int))
 _SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
 
 
@@ -77,6 +78,7 @@ class _Splits:
         self._xyz = np.array(vertices, float)
         self.n = len(vertices)
         self.on = {}                     # (a, b) with a < b -> {t: id}, t from a
+        self._sorted = {}                # (a, b) -> (fractions, ids), sorted, as last asked
 
     def add_vertex(self, p):
         p = np.atleast_2d(p)
@@ -97,17 +99,19 @@ class _Splits:
         if not any(abs(t - x) < SAME_T for x in got):
             pa, pb = self._xyz[a], self._xyz[b]
             got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
+            self._sorted.pop((a, b), None)
 
     def along(self, a, b):
         """(fractions from a, ids) of the points on edge (a, b), in order from a."""
-        got = self.on.get((min(a, b), max(a, b)), {})
-        if not got:
-            return np.zeros(0), np.zeros(0, int)
-        t = np.array(sorted(got))
-        ids = np.array([got[x] for x in t])
-        if a > b:
-            t, ids = 1.0 - t[::-1], ids[::-1]
-        return t, ids
+        key = (a, b) if a < b else (b, a)
+        if key not in self.on:
+            return _NONE
+        if key not in self._sorted:
+            got = self.on[key]
+            t = np.array(sorted(got))
+            self._sorted[key] = (t, np.array([got[x] for x in t]))
+        t, ids = self._sorted[key]
+        return (t, ids) if a < b else (1.0 - t[::-1], ids[::-1])
 
     def all(self):
         return self._xyz[:self.n]
