@@ -204,3 +204,21 @@ def test_surfaces_that_cross_when_re_triangulated_keep_their_own_triangles():
     assert tm.is_watertight and tm.is_winding_consistent
     smallest = triangle_angles(better.vertices, better.triangles).min(axis=1)
     assert np.mean(smallest >= 20.0) >= 0.9
+
+
+@pytest.mark.slow
+def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own():
+    """A generated airplane with a cubic fillet and keep_area (tests/data/generated/README.md)
+    where two re-triangulated surfaces make the same triangle at a narrow corner: kept as
+    assembled there, the airplane passes every check."""
+    geo = _geo(DATA / "generated" / "remesh" / "fillet_corner_shared_when_re_triangulated.inp",
+               fillet="cubic", keep_area=True)
+    assembled = assemble(geo)
+    first = remesh(assembled)
+    assert check_mesh(first.vertices, first.triangles).nonmanifold_edges > 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", jc.JunctureWarning)
+        better, report = quality(assembled)
+    assert report is not None and report.ok
+    tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent

@@ -108,14 +108,15 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     :func:`~juncture.surface.check.check_mesh` report.
 
     Where re-triangulated surfaces cross (a pod's tip, curved faster than the new triangles
-    follow), those surfaces keep their own triangles and the rest is re-triangulated again
-    (up to ``RETRIES`` times). Where it still fails, the surface as it was (report None),
+    follow) or share a triangle (two surfaces that make the same one across a narrow corner
+    between them), those surfaces keep their own triangles and the rest is re-triangulated
+    again (up to ``RETRIES`` times). Where it still fails, the surface as it was (report None),
     with a :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
     """
     import warnings
 
     from ..errors import GeometryError, JunctureWarning
-    from .check import check_mesh, self_intersections
+    from .check import check_mesh
     from .remesh import remesh
 
     if surface.open_loops:
@@ -134,10 +135,7 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
         failures = report.failures()
         if not failures:
             return better, report
-        if len(failures) > 1 or not report.intersecting_pairs:
-            break
-        crossing = self_intersections(better.vertices, better.triangles)
-        more = set(better.surface[crossing.ravel()].tolist()) - keep
+        more = _troubled_surfaces(better, report) - keep
         if not more:
             break
         keep |= more
@@ -149,3 +147,25 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
 
 #: Re-triangulations after the first, each keeping the surfaces that crossed.
 RETRIES = 2
+
+
+def _troubled_surfaces(surface, report):
+    """Surface ids of the triangles on edges in more than two triangles and of the triangle
+    pairs that cross; empty when anything else fails (open, misoriented: not a matter of
+    some surfaces)."""
+    from .check import self_intersections
+
+    if report.open_edges or report.misoriented_edges:
+        return set()
+    out = set()
+    if report.nonmanifold_edges:
+        t = surface.triangles
+        directed = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+        _, inverse, uses = np.unique(np.sort(directed, axis=1), axis=0, return_inverse=True,
+                                     return_counts=True)
+        many = uses[inverse.ravel()] > 2
+        out |= set(surface.surface[np.tile(np.arange(len(t)), 3)[many]].tolist())
+    if report.intersecting_pairs:
+        crossing = self_intersections(surface.vertices, surface.triangles)
+        out |= set(surface.surface[crossing.ravel()].tolist())
+    return out
