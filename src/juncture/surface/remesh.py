@@ -45,6 +45,9 @@ BUDGET = 30
 SMALL = 0.05
 #: Refinement makes no edge shorter than this share of a chart's median edge.
 SHORTEST = 0.02
+#: A patch whose area is below this share of a circle's of its boundary's length is a
+#: sliver: it keeps its triangles.
+SLIVER = 1e-3
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
 _NONE = (np.zeros(0), np.zeros(0, int))
@@ -146,6 +149,8 @@ def _chart(mesh, rows):
     t = mesh.triangles[rows]
     used, local = np.unique(t, return_inverse=True)
     local = local.reshape(t.shape)
+    if _sliver(mesh.vertices[used], local):
+        return None
     for cut in (False, True):
         got = disc(local, len(used)) if cut else (local, np.arange(len(used)))
         if got is None:
@@ -176,6 +181,18 @@ def _shortest(uv, tri):
     instead of grading down without end (and using up the points the rest needs)."""
     e = np.linalg.norm(uv[tri] - uv[np.roll(tri, 1, axis=1)], axis=2)
     return SHORTEST * float(np.median(e[e > 0]))
+
+
+def _sliver(points, tri):
+    """Whether a patch is a sliver (a cap closing a slit): its area below ``SLIVER`` times
+    that of a circle of its boundary's length; there is nothing to refine in it."""
+    from .assemble import boundary_loops
+
+    p = points[tri]
+    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1).sum()
+    length = sum(np.linalg.norm(points[lp] - points[np.roll(lp, -1)], axis=1).sum()
+                 for lp in boundary_loops(tri))
+    return length > 0 and 4.0 * np.pi * area < SLIVER * length ** 2
 
 
 def _embedded(uv, edges):
