@@ -196,12 +196,7 @@ def test_surfaces_that_cross_when_re_triangulated_keep_their_own_triangles():
                               / "pod_tip_crossing_when_re_triangulated.inp"))
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).intersecting_pairs > 0
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", jc.JunctureWarning)     # no fall-back
-        better, report = quality(assembled)
-    assert report is not None and report.ok
-    tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
-    assert tm.is_watertight and tm.is_winding_consistent
+    better = _kept_where_needed(assembled)
     smallest = triangle_angles(better.vertices, better.triangles).min(axis=1)
     assert np.mean(smallest >= 20.0) >= 0.9
 
@@ -216,9 +211,15 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own():
     assembled = assemble(geo)
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).nonmanifold_edges > 0
+    _kept_where_needed(assembled)
+
+
+def _kept_where_needed(assembled):
+    """quality(): re-triangulated with no fall-back, checked, watertight for trimesh."""
     with warnings.catch_warnings():
-        warnings.simplefilter("error", jc.JunctureWarning)
+        warnings.simplefilter("error", jc.JunctureWarning)     # no fall-back
         better, report = quality(assembled)
     assert report is not None and report.ok
     tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
+    return better

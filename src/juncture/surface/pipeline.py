@@ -153,18 +153,16 @@ def _troubled_surfaces(surface, report):
     """Surface ids of the triangles on edges in more than two triangles and of the triangle
     pairs that cross; empty when anything else fails (open, misoriented: not a matter of
     some surfaces)."""
+    from .chart import patch_edges
     from .check import self_intersections
 
     if report.open_edges or report.misoriented_edges:
         return set()
     out = set()
     if report.nonmanifold_edges:
-        t = surface.triangles
-        directed = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
-        _, inverse, uses = np.unique(np.sort(directed, axis=1), axis=0, return_inverse=True,
-                                     return_counts=True)
-        many = uses[inverse.ravel()] > 2
-        out |= set(surface.surface[np.tile(np.arange(len(t)), 3)[many]].tolist())
+        _, _, uses, inverse = patch_edges(surface.triangles)
+        many = uses[inverse] > 2          # per directed edge: rows 01, then 12, then 20
+        out |= set(np.tile(surface.surface, 3)[many].tolist())
     if report.intersecting_pairs:
         crossing = self_intersections(surface.vertices, surface.triangles)
         out |= set(surface.surface[crossing.ravel()].tolist())

@@ -166,11 +166,11 @@ def _chart(mesh, rows):
         if find is None:
             continue
         p = mesh.vertices[ids][tri]
-        normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-        normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+        cross = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+        double = np.linalg.norm(cross, axis=1)
         return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
-                      int(mesh.surface[rows[0]]), normals,
-                      _area3(p), float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
+                      int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
+                      float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
                       _shortest(uv, tri))
     return None
 
@@ -188,8 +188,7 @@ def _sliver(points, tri):
     that of a circle of its boundary's length; there is nothing to refine in it."""
     from .assemble import boundary_loops
 
-    p = points[tri]
-    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1).sum()
+    area = _area3(points[tri]).sum()
     length = sum(np.linalg.norm(points[lp] - points[np.roll(lp, -1)], axis=1).sum()
                  for lp in boundary_loops(tri))
     return length > 0 and 4.0 * np.pi * area < SLIVER * length ** 2
