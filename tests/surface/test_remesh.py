@@ -10,6 +10,7 @@ import warnings
 import numpy as np
 import pytest
 import trimesh
+from hypothesis import HealthCheck, given, settings
 
 import juncture as jc
 from juncture.surface.assemble import SurfaceMesh, assemble
@@ -18,6 +19,7 @@ from juncture.surface.check import check_mesh
 from juncture.surface.pipeline import quality
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
+from tests.deckgen import decks
 from tests.support import DATA, EXAMPLE_DECK
 
 GENERATED = sorted((DATA / "generated").glob("*.inp"))
@@ -223,3 +225,29 @@ def _kept_where_needed(assembled):
     tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     return better
+
+
+@pytest.mark.slow
+@settings(deadline=None, max_examples=12, suppress_health_check=[HealthCheck.too_slow])
+@given(drawn=decks())
+def test_re_triangulating_any_closed_airplane_keeps_it_closed_and_oriented(drawn):
+    """Generated airplanes (tests.deckgen) whose assembled surface closes: re-triangulated,
+    every edge is still in two triangles or more (no seam opens: seam points are shared by
+    construction), every edge used once each way, and every assembled vertex kept."""
+    from juncture.surface.quality import summarize
+    from tests.deckgen import read_text
+
+    text, _ = drawn
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            assembled = assemble(jc.complete(read_text(text)))
+        except jc.JunctureError:
+            return
+    if assembled.open_loops or not check_mesh(assembled.vertices, assembled.triangles).ok:
+        return
+    better = remesh(assembled)
+    counts = summarize(better)
+    assert counts.open_edges == 0 and counts.misoriented_edges == 0
+    assert np.array_equal(better.vertices[:len(assembled.vertices)], assembled.vertices)
+    assert np.isin(np.unique(assembled.triangles), better.triangles).all()
