@@ -96,14 +96,8 @@ def test_a_footprint_on_long_triangles_whose_centres_lie_far_away():
     triangles = inverse[np.concatenate([bt, pt + len(bp)])]
     host = np.r_[np.ones(len(bt), bool), np.zeros(len(pt), bool)]
     loop = inverse[len(bp) + np.arange(9)]
-    removed, new = imprint(vertices, triangles, host, loop)
-    keep = np.ones(len(triangles), bool)
-    keep[removed] = False
-    report = check_mesh(vertices, np.concatenate([triangles[keep], new]))
-    assert report.ok, report.failures()
-    x, y = ring[:, 0], ring[:, 1]
-    base = 0.5 * abs(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
-    assert report.volume == pytest.approx(200.0 * 4.0 + base, rel=1e-12)
+    report = _imprinted(vertices, triangles, host, loop)
+    assert report.volume == pytest.approx(200.0 * 4.0 + _area(ring), rel=1e-12)
 
 
 def test_footprints_whose_regions_meet_are_cut_together():
@@ -162,14 +156,8 @@ def test_a_footprint_under_slivers_whose_corners_are_all_far_away():
     loop = inverse[len(pts) + np.arange(11)]
     base = check_mesh(vertices, inverse[box_t])
     assert base.ok, base.failures()
-    removed, new = imprint(vertices, triangles, host, loop)
-    keep = np.ones(len(triangles), bool)
-    keep[removed] = False
-    report = check_mesh(vertices, np.concatenate([triangles[keep], new]))
-    assert report.ok, report.failures()
-    x, y = foot[:, 0], foot[:, 1]
-    area = 0.5 * abs(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
-    assert report.volume == pytest.approx(base.volume + area, rel=1e-12)
+    report = _imprinted(vertices, triangles, host, loop)
+    assert report.volume == pytest.approx(base.volume + _area(foot), rel=1e-12)
 
 
 def test_the_host_of_a_footprint_on_the_four_block_layout_is_both_wing_body_blocks():
@@ -180,3 +168,20 @@ def test_the_host_of_a_footprint_on_the_four_block_layout_is_both_wing_body_bloc
     assert hosts_of("body", comps) == (0, 1, 2)
     assert hosts_of("pod 1", comps) == (3,)
     assert hosts_of("wing", ("body", "wing", "pod 1")) == (1,)
+
+
+def _imprinted(vertices, triangles, host, loop):
+    """check_mesh report of the surface with ``loop`` cut into the ``host`` triangles;
+    asserted valid."""
+    removed, new = imprint(vertices, triangles, host, loop)
+    keep = np.ones(len(triangles), bool)
+    keep[removed] = False
+    report = check_mesh(vertices, np.concatenate([triangles[keep], new]))
+    assert report.ok, report.failures()
+    return report
+
+
+def _area(ring):
+    """Shoelace area of a polygon's x, y."""
+    x, y = ring[:, 0], ring[:, 1]
+    return 0.5 * abs(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
