@@ -20,7 +20,7 @@ import pytest
 from scipy.spatial import cKDTree
 
 import juncture as jc
-from juncture.analysis.closed import closed_networks
+from juncture.analysis.closed import by_copy, closed_networks
 from juncture.surface.assemble import assemble
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
@@ -60,16 +60,11 @@ def _component_meshes(cfg, n_chord, n_theta):
     points they share merged."""
     nets = closed_networks(cfg, n_chord=n_chord, n_theta=n_theta, union=False,
                            flow_through=False)
-    names = sorted(cfg.components, key=len, reverse=True)
-    groups = {}
-    for name, net in nets.items():
-        base = name.removesuffix(" image")
-        comp = next(c for c in names if base == c or base.startswith(c + " "))
-        groups.setdefault((comp, name.endswith(" image")), []).append(np.asarray(net, float))
+    groups = by_copy(cfg, nets)
     out = []
     for group in groups.values():
         pts, tris, off = [], [], 0
-        for net in group:
+        for _, net in group:
             n, m = net.shape[:2]
             i, j = np.meshgrid(np.arange(n - 1), np.arange(m - 1), indexing="ij")
             a = (i * m + j).ravel()

@@ -7,6 +7,7 @@ Public API::
     geo = jc.complete(cfg, fillet="cubic", keep_area=True)
     jc.write(geo, "out.wgs")         # by extension: .wgs .p3d .hess .stl .vtu .vtk .inp ...
     surface = jc.mesh(geo)           # one closed triangulated surface (both halves)
+    jc.write_solids(geo, "x.step")   # CAD: one closed solid per component (or "fused")
     df = jc.sweep("study.toml")      # a design study: one row per case (pandas DataFrame)
 
 Axes as in the wave-drag deck: x aft, y to starboard, z up; only the y >= 0 half is described.
@@ -32,7 +33,7 @@ __version__ = "0.1.0"
 # name -> module that defines it, imported on first access
 _LAZY = {"read": ".io", "write": ".io", "complete": ".completion",
          "CompleteOptions": ".options", "Geometry": ".geometry", "sweep": ".study",
-         "mesh": ".surface.pipeline"}
+         "mesh": ".surface.pipeline", "write_solids": ".surface.solids"}
 
 __all__ = [
     "read",
@@ -42,6 +43,7 @@ __all__ = [
     "Geometry",
     "sweep",
     "mesh",
+    "write_solids",
     "JunctureError",
     "DeckError",
     "GeometryError",

@@ -44,7 +44,7 @@ from ..model import ArbitraryBody, CircularBody, WingLike
 from ._components import body_box, boxes_overlap, held_bases, is_flow_through, wing_box
 
 __all__ = ["is_flow_through", "capture_tube", "closed_networks", "body_solid",
-           "winglike_solid", "held_base_solids", "oriented"]
+           "winglike_solid", "held_base_solids", "oriented", "by_copy"]
 
 
 def oriented(net, direction):
@@ -68,6 +68,24 @@ def oriented(net, direction):
     d2 = p[:-1, 1:] - p[1:, :-1]
     mean = np.cross(d2, d1).sum(axis=(0, 1))  # twice the vector area, outward convention
     return p[::-1] if float(mean @ np.asarray(direction, float)) < 0.0 else p
+
+
+def by_copy(cfg, networks):
+    """:func:`closed_networks`' networks grouped by component copy.
+
+    Returns
+    -------
+    dict of (str, bool) to list of (str, (n, m, 3) float)
+        ``(component name, is the mirror image)`` -> its networks, in order.
+    """
+    names = sorted(cfg.components, key=len, reverse=True)
+    groups = {}
+    for name, net in networks.items():
+        base = name.removesuffix(" image")
+        comp = next(c for c in names if base == c or base.startswith(c + " "))
+        groups.setdefault((comp, name.endswith(" image")), []).append(
+            (name, np.asarray(net, float)))
+    return groups
 
 
 def _mirror(net):
@@ -96,7 +114,7 @@ def _equal_area_factor(n_sides):
     return np.sqrt(2.0 * np.pi / (n_sides * np.sin(2.0 * np.pi / n_sides)))
 
 
-def body_solid(body, n_theta=48, n_body=121):
+def body_solid(body, n_theta=48, n_body=121, equal_area=True):
     """Closed networks of one body (both halves of a centre-line body, all round a pod).
 
     Parameters
@@ -107,6 +125,9 @@ def body_solid(body, n_theta=48, n_body=121):
     n_body : int
         Cosine-spaced stations added over the whole length (shared among the segments by
         length), besides every input station.
+    equal_area : bool
+        Scale a circular section's polygon to the circle's area (for cuts); False: its
+        corners on the circle (the surface itself, for CAD faces).
 
     Returns
     -------
@@ -131,7 +152,7 @@ def body_solid(body, n_theta=48, n_body=121):
         # the joint station itself): the last station a hair inside.
         xe = xq.copy()
         xe[-1] = np.nextafter(xq[-1], -np.inf) if xq.size > 1 else xq[-1]
-        rings.append(_rings(body, xq, xe, n_theta))
+        rings.append(_rings(body, xq, xe, n_theta, equal_area))
     side = np.concatenate(rings, axis=0)
     out = {body.name: side}
     for end, idx, direction in (("nose", 0, -1.0), ("base", -1, 1.0)):
@@ -148,11 +169,11 @@ def _centre(body, x):
     return np.array([x, c[0], c[1]])
 
 
-def _rings(body, xq, xe, n_theta):
+def _rings(body, xq, xe, n_theta, equal_area=True):
     """(n_x, n_points, 3) closed cross-section polygons, counter-clockwise seen from ahead."""
     if isinstance(body, CircularBody):
         theta = np.linspace(-0.5 * np.pi, 1.5 * np.pi, n_theta + 1)
-        r = body.radius_at(xe) * _equal_area_factor(n_theta)
+        r = body.radius_at(xe) * (_equal_area_factor(n_theta) if equal_area else 1.0)
         c = body.center_at(xe)
         return np.stack(np.broadcast_arrays(
             xq[:, None], c[:, 0, None] + r[:, None] * np.cos(theta),
@@ -347,7 +368,7 @@ def held_base_solids(cfg, x_far, n_theta=48):
 
 
 def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
-                    flow_through=True, union=True):
+                    flow_through=True, union=True, equal_area=True):
     """Closed, outward networks of every component of a configuration, both halves.
 
     Parameters
@@ -363,6 +384,9 @@ def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
         Trim wing-like components at the bodies they enter, so that a buried root counts
         once; False: every component whole, so that cut areas are summed (the Harris
         program's convention, :mod:`juncture.analysis.harris`).
+    equal_area : bool
+        Circular sections as polygons of the circle's area (for cuts, default) or with their
+        corners on the circle (False: the surface itself, as CAD faces need).
 
     Returns
     -------
@@ -383,7 +407,7 @@ def closed_networks(cfg, n_chord=49, n_span=25, n_theta=48, n_body=121, n_cap=5,
         if isinstance(comp, WingLike):
             nets = winglike_solid(comp, cfg.bodies if union else (), n_chord, n_span, n_cap)
         else:
-            nets = body_solid(comp, n_theta, n_body)
+            nets = body_solid(comp, n_theta, n_body, equal_area)
         if flow_through and is_flow_through(comp):
             nets.update(capture_tube(comp, n_theta))
         out.update(nets)

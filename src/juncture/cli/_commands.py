@@ -132,18 +132,22 @@ def network_extensions():
     return [e for e in writer_extensions() if output_format(f"x.{e}") not in _COMPONENT_FORMATS]
 
 
-def write_outputs(cfg, geo, out, formats, fillet, keep_area, units="ft"):
+def write_outputs(cfg, geo, out, formats, fillet, keep_area, units="ft", cad="components"):
     """The networks in every format asked (geometry.<ext>) and summary.json; returns the names
-    written. CAD files (STEP, IGES) declare ``units``."""
+    written. CAD files (STEP, IGES) hold ``cad`` (:mod:`juncture.surface.solids`) and declare
+    ``units``."""
     from ..errors import MissingDependencyError
     from ..io import atomic_output, output_format, write
+    from ..surface.solids import write_solids
 
     written = []
     for fmt in formats:
         name = f"geometry.{fmt}"
-        cad = output_format(name) in ("step", "iges")
         try:
-            write(geo, out / name, **({"units": units} if cad else {}))
+            if output_format(name) in ("step", "iges"):
+                write_solids(geo, out / name, cad, units)
+            else:
+                write(geo, out / name)
         except MissingDependencyError as exc:
             print(f"juncture: skipped {name}: {exc}", file=sys.stderr)
             continue
@@ -202,7 +206,8 @@ def complete(args, progress):
         bar.step("complete")
         geo = complete_(cfg, fillet, args.keep_area, options=opts)
         bar.step("write " + " ".join(formats))
-        written = write_outputs(cfg, geo, out, formats, fillet, args.keep_area, args.units)
+        written = write_outputs(cfg, geo, out, formats, fillet, args.keep_area, args.units,
+                                args.cad)
         if args.figures:
             from ..plots import write_figures
 

@@ -170,6 +170,10 @@ def _complete_parser(sub, common, extensions):
                    help="also draw the figures (views, intersections, fillet sections, areas)")
     s.add_argument("--report", action="store_true",
                    help="also write report.html: inputs, tables, figures, wave drag, mass")
+    s.add_argument("--cad", choices=("components", "fused", "faces"), default="components",
+                   help="what STEP/IGES files hold: one closed solid per component "
+                   "(default), the fused solid of the completed airplane (fillets "
+                   "included), or the networks as faces")
     _units(s)
     return s
 

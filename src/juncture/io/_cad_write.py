@@ -22,7 +22,8 @@ import numpy as np
 
 from ..errors import JunctureError
 
-__all__ = ["CAD_UNITS", "cad_unit", "bilinear_face", "products", "step_document", "iges_model"]
+__all__ = ["CAD_UNITS", "cad_unit", "bilinear_face", "products", "step_document", "iges_model",
+           "sewn_solid", "mesh_solid", "compound", "network_shapes"]
 
 #: Length units a CAD file can declare: label -> (OpenCASCADE's name, metres per unit).
 CAD_UNITS = {"mm": ("MM", 1e-3), "cm": ("CM", 1e-2), "m": ("M", 1.0), "km": ("KM", 1e3),
@@ -49,9 +50,11 @@ def cad_unit(units):
 
 
 def _distinct(net, axis):
-    """Drop rows (axis 0) or columns (axis 1) equal to the previous one; knots from the
-    averaged chord lengths of what remains, scaled to [0, 1] (None if fewer than two)."""
+    """Drop rows (axis 0) or columns (axis 1) equal to the previous one (within 1e-10 of the
+    network's extent in the mean: knots that close are refused); knots from the averaged
+    chord lengths of what remains, scaled to [0, 1] (None if fewer than two)."""
     step = np.linalg.norm(np.diff(net, axis=axis), axis=2).mean(axis=1 - axis)
+    step = np.where(step > 1e-10 * step.sum(), step, 0.0)
     keep = np.r_[True, step > 0]
     net = net[keep] if axis == 0 else net[:, keep]
     chord = np.r_[0.0, np.cumsum(step[step > 0])]
@@ -94,27 +97,164 @@ def _size(geometry):
     return float(np.max(hi - lo)) or 1.0
 
 
-def _compound(api, faces):
+def compound(api, shapes):
+    """One OCP compound of the shapes."""
     comp = api.Compound()
     builder = api.Builder()
     builder.MakeCompound(comp)
-    for face in faces:
-        builder.Add(comp, face)
+    for shape in shapes:
+        builder.Add(comp, shape)
     return comp
 
 
-def _product_shapes(api, geometry, mirror):
+def network_shapes(api, geometry, mirror):
+    """[(component, compound of its networks' faces)] of a Geometry."""
     size = _size(geometry)
     out = []
     for owner, nets in products(geometry, mirror).items():
         faces = [f for f in (bilinear_face(api, pts, size) for _, pts in nets) if f is not None]
         if faces:
-            out.append((owner, _compound(api, faces)))
+            out.append((owner, compound(api, faces)))
     return out
 
 
-def step_document(api, geometry, units="ft", mirror=True):
-    """An XCAF document holding one named shape per component, in ``units``."""
+def _solid_of_shell(shell):
+    from OCP.BRep import BRep_Builder
+    from OCP.TopoDS import TopoDS_Solid
+
+    solid = TopoDS_Solid()
+    builder = BRep_Builder()
+    builder.MakeSolid(solid)
+    builder.Add(solid, shell)
+    return solid
+
+
+def sewn_solid(api, faces, tolerance, name):
+    """The closed solid bounded by ``faces`` (sewn within ``tolerance``), outward.
+
+    Raises
+    ------
+    GeometryError
+        If the faces leave free edges or do not sew into one shell.
+    """
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_Sewing
+    from OCP.ShapeFix import ShapeFix_Solid
+    from OCP.TopAbs import TopAbs_FACE, TopAbs_SHELL
+
+    from ..errors import GeometryError
+
+    sew = BRepBuilderAPI_Sewing(tolerance)
+    for face in faces:
+        sew.Add(face)
+    sew.Perform()
+    sewn = sew.SewedShape()
+    shells = _subshapes(sewn, TopAbs_SHELL) or [_shell(api, _subshapes(sewn, TopAbs_FACE))]
+    if sew.NbFreeEdges() or len(shells) != 1:
+        raise GeometryError(f"its faces do not close: {sew.NbFreeEdges()} free edges, "
+                            f"{len(shells)} shells", component=name)
+    fix = ShapeFix_Solid(_solid_of_shell(shells[0]))
+    fix.Perform()
+    return fix.Solid()
+
+
+def _shell(api, faces):
+    """A shell of the faces (one face that closes on itself sews into no shell)."""
+    from OCP.TopoDS import TopoDS_Shell
+
+    shell = TopoDS_Shell()
+    builder = api.Builder()
+    builder.MakeShell(shell)
+    for face in faces:
+        builder.Add(shell, face)
+    return shell
+
+
+def _subshapes(shape, kind):
+    from OCP.TopExp import TopExp_Explorer
+
+    out = []
+    explorer = TopExp_Explorer(shape, kind)
+    while explorer.More():
+        out.append(explorer.Current())
+        explorer.Next()
+    return out
+
+
+#: Edges shorter than this (in the file's unit) are collapsed: OpenCASCADE confuses points
+#: closer than 1e-7 (Precision::Confusion) whatever the unit, so no edge can be that short.
+SHORTEST_EDGE = 1e-6
+
+
+def _collapse_short_edges(vertices, triangles):
+    """Triangles with the ends of every edge shorter than :data:`SHORTEST_EDGE` merged (onto
+    the lower vertex id) and the triangles that collapse dropped."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    pairs = triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    short = np.linalg.norm(np.diff(vertices[pairs], axis=1)[:, 0], axis=1) < SHORTEST_EDGE
+    if not short.any():
+        return triangles
+    a, b = pairs[short].T
+    n = len(vertices)
+    _, label = connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)))
+    first = np.full(label.max() + 1, n)
+    np.minimum.at(first, label, np.arange(n))
+    out = first[label][triangles]
+    return out[(out[:, 0] != out[:, 1]) & (out[:, 1] != out[:, 2]) & (out[:, 0] != out[:, 2])]
+
+
+def _bodies(triangles, n):
+    """(m,) label of the closed body (connected part) each triangle belongs to."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    a = triangles[:, [0, 1, 2]].ravel()
+    b = triangles[:, [1, 2, 0]].ravel()
+    _, label = connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)))
+    return label[triangles[:, 0]]
+
+
+def mesh_solid(api, vertices, triangles):
+    """The solid a closed, outward-oriented triangle mesh bounds (a compound of one solid per
+    closed body when there are several): one plane face per triangle, one vertex per mesh
+    vertex and one edge per mesh edge, shared as the mesh shares them (nothing is sewn).
+    Edges shorter than :data:`SHORTEST_EDGE` are collapsed first."""
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeEdge as MakeEdge
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeFace as MakeFace
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeVertex as MakeVertex
+    from OCP.BRepBuilderAPI import BRepBuilderAPI_MakeWire as MakeWire
+    from OCP.TopAbs import TopAbs_FORWARD
+
+    from .cad import _first
+
+    vertices = np.asarray(vertices, float)
+    triangles = _collapse_short_edges(vertices, np.asarray(triangles, int))
+    corners = [MakeVertex(api.gp_Pnt(*p)).Vertex() for p in vertices.tolist()]
+    pairs = np.sort(triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
+    edges, of = np.unique(pairs, axis=0, return_inverse=True)
+    edges = [MakeEdge(corners[a], corners[b]).Edge() for a, b in edges.tolist()]
+    of = of.reshape(-1, 3).tolist()
+    p = vertices[triangles]
+    normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]).tolist()
+    surface_of = _first(BRep_Tool, "Surface_s", "Surface")
+    faces = []
+    for (i, j, k), n in zip(of, normals):
+        face = MakeFace(MakeWire(edges[i], edges[j], edges[k]).Wire(), True).Face()
+        axis = surface_of(face).Pln().Axis().Direction()
+        sense = 1.0 if face.Orientation() == TopAbs_FORWARD else -1.0
+        if sense * (axis.X() * n[0] + axis.Y() * n[1] + axis.Z() * n[2]) < 0.0:
+            face.Reverse()
+        faces.append(face)
+    body = _bodies(triangles, len(vertices))
+    solids = [_solid_of_shell(_shell(api, [faces[t] for t in np.flatnonzero(body == b)]))
+              for b in np.unique(body)]
+    return solids[0] if len(solids) == 1 else compound(api, solids)
+
+
+def step_document(api, shapes, units="ft"):
+    """An XCAF document holding the named shapes ``[(name, shape)]``, in ``units``."""
     from OCP.Interface import Interface_Static
     from OCP.TCollection import TCollection_ExtendedString
     from OCP.TDataStd import TDataStd_Name
@@ -125,20 +265,21 @@ def step_document(api, geometry, units="ft", mirror=True):
     doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
     XCAFDoc_DocumentTool.SetLengthUnit_s(doc, metres)
     tool = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
-    for owner, shape in _product_shapes(api, geometry, mirror):
+    for owner, shape in shapes:
         TDataStd_Name.Set_s(tool.AddShape(shape, False), TCollection_ExtendedString(owner))
     Interface_Static.SetCVal_s("write.step.unit", name)
     return doc
 
 
-def iges_model(api, geometry, units="ft", mirror=True):
-    """An IGES writer holding every face, its global section in ``units`` (no scaling)."""
+def iges_model(api, shapes, units="ft"):
+    """An IGES writer holding the shapes ``[(name, shape)]`` (names are not kept), its
+    global section in ``units`` (no scaling)."""
     name, metres = cad_unit(units)
     writer = api.IgesWriter(name, 0)
     model = writer.Model()
     section = model.GlobalSection()
     section.SetCascadeUnit(metres * 1000.0)
     model.SetGlobalSection(section)
-    for _, shape in _product_shapes(api, geometry, mirror):
+    for _, shape in shapes:
         writer.AddShape(shape)
     return writer

@@ -30,8 +30,8 @@ from ..errors import GeometryError, JunctureError, MissingDependencyError
 from ._cad_write import CAD_UNITS
 from ._registry import atomic_output, register_format, to_geometry
 
-__all__ = ["CAD_UNITS", "write_step", "write_iges", "write_bspline_surfaces", "ocp_api",
-           "network_face", "section_points"]
+__all__ = ["CAD_UNITS", "write_step", "write_iges", "write_shapes", "write_bspline_surfaces",
+           "ocp_api", "network_face", "section_points"]
 
 _INSTALL = "pip install juncture[cad]"
 
@@ -219,7 +219,7 @@ def _write_faces(api, faces, path, kind):
 
 
 def _write_geometry(obj, path, kind, units, mirror):
-    from ._cad_write import cad_unit, iges_model, step_document
+    from ._cad_write import cad_unit, network_shapes
 
     cad_unit(units)  # a unit the file cannot declare is refused before OCP loads
     api = ocp_api()
@@ -227,15 +227,23 @@ def _write_geometry(obj, path, kind, units, mirror):
     if not geometry.networks:
         raise GeometryError(f"nothing to write to {kind.upper()}: the geometry has no "
                             "networks")
+    return write_shapes(network_shapes(api, geometry, mirror), path, kind, units)
+
+
+def write_shapes(shapes, path, kind, units="ft"):
+    """Write named OCP shapes ``[(name, shape)]`` as STEP (one product each) or IGES."""
+    from ._cad_write import iges_model, step_document
+
+    api = ocp_api()
 
     def write_to(tmp_file):
         if kind == "step":
             from OCP.STEPCAFControl import STEPCAFControl_Writer
 
             writer = STEPCAFControl_Writer()
-            writer.Transfer(step_document(api, geometry, units, mirror), api.StepAsIs)
+            writer.Transfer(step_document(api, shapes, units), api.StepAsIs)
             return int(writer.Write(tmp_file)) == 1
-        writer = iges_model(api, geometry, units, mirror)
+        writer = iges_model(api, shapes, units)
         writer.ComputeModel()
         return bool(writer.Write(tmp_file))
 

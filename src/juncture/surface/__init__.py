@@ -10,5 +10,6 @@
 ``pipeline``                ``juncture.mesh``: assemble, check, re-triangulate
 ``quality``, ``check``      closed, manifold, oriented, no crossing; volume, wetted area, angles
 ``write``                   STL, Gmsh, VTU with component ids
+``solids``                  CAD solids: one per component, or the fused airplane (STEP, IGES)
 ==========================  ==================================================================
 """
