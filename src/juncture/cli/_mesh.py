@@ -42,6 +42,7 @@ def run(args, progress):
     from ..completion import complete
     from ..surface.assemble import assemble
     from ..surface.check import check_mesh
+    from ..surface.lift import surface_lift
     from ..surface.pipeline import quality
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
@@ -71,7 +72,8 @@ def run(args, progress):
                  "written: " + "; ".join(report.failures()))
         if args.min_angle:
             bar.step(f"re-triangulate (smallest angle {args.min_angle:g} deg)")
-            better, checked = quality(mesh, args.min_angle, args.edge_length, args.tolerance)
+            better, checked = quality(mesh, args.min_angle, args.edge_length, args.tolerance,
+                                      lift=surface_lift(geo, mesh))
             if checked is not None:
                 mesh, report, summary = better, checked, summarize(better)
         bar.step("write " + " ".join(args.format))

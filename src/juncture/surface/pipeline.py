@@ -65,9 +65,10 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     volume, no self-intersection under exact predicates): a surface that fails one is
     refused with a :class:`~juncture.errors.GeometryError` that says what fails, in one line.
     Then :func:`quality` (triangles of at least ``min_angle`` degrees where the corners
-    allow, at most ``tolerance`` times the airplane's size off its networks, no larger than
-    equilateral triangles of ``edge_length``; ``min_angle=0`` keeps the networks' own
-    triangles).
+    allow, new points on the exact surfaces of circular bodies and wing-like components
+    (:mod:`juncture.surface.lift`), at most ``tolerance`` times the airplane's size off
+    them, no larger than equilateral triangles of ``edge_length``; ``min_angle=0`` keeps the
+    networks' own triangles).
 
     Returns
     -------
@@ -81,7 +82,10 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     if check:
         _refuse(geometry, surface, check_mesh(surface.vertices, surface.triangles).failures())
     if min_angle:
-        surface, _ = quality(surface, min_angle, edge_length, tolerance, check)
+        from .lift import surface_lift
+
+        surface, _ = quality(surface, min_angle, edge_length, tolerance, check,
+                             surface_lift(geometry, surface))
     return surface
 
 
@@ -102,7 +106,8 @@ def _refuse(geometry, surface, failures):
                         + "; ".join(failures))
 
 
-def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True):
+def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True,
+            lift=None):
     """(surface, report): ``surface`` re-triangulated by
     :func:`juncture.surface.remesh.remesh` and, with ``check``, its
     :func:`~juncture.surface.check.check_mesh` report.
@@ -112,6 +117,8 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     between them), those surfaces keep their own triangles and the rest is re-triangulated
     again (up to ``RETRIES`` times). Where it still fails, the surface as it was (report None),
     with a :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
+    ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points on the exact
+    surfaces.
     """
     import warnings
 
@@ -125,7 +132,7 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     for _ in range(RETRIES + 1):
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
-                            tolerance=tolerance, keep=keep)
+                            tolerance=tolerance, keep=keep, lift=lift)
         except GeometryError as exc:
             failures = [str(exc)]
             break

@@ -71,6 +71,7 @@ class _Patch:
     extra_id: list = field(default_factory=list)
     seen: int = -1                       # split points known at the last triangulation
     out: np.ndarray | None = None        # current triangles (global ids)
+    lift: object = None                  # lift(points, corners, component, surface)
 
 
 class _Splits:
@@ -276,8 +277,7 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
     inner = np.setdiff1d(np.arange(n, len(pts)), np.fromiter(on_edge, int, len(on_edge)))
     gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     if len(inner):
-        xyz = locate(patch.uv, patch.tri, vertices[patch.ids], pts[inner], patch.find)[0]
-        gid[inner] = splits.add_vertex(xyz)
+        gid[inner] = splits.add_vertex(_on_surface(patch, vertices, pts[inner])[0])
         patch.extra_uv.append(pts[inner])
         patch.extra_id.append(gid[inner])
     if on_edge:
@@ -288,8 +288,7 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary)
     if len(far):
         patch.extra_uv.append(far)
-        patch.extra_id.append(splits.add_vertex(
-            locate(patch.uv, patch.tri, vertices[patch.ids], far, patch.find)[0]))
+        patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, far)[0]))
         return False
     patch.out = gid[local]
     return True
@@ -311,6 +310,11 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
     across = boundary[local].all(axis=1) & (dev > 1e-9 * patch.size)
     if tol is None:
         return centre[across]
+    if patch.lift is not None:  # off the exact surface, where there is one, but for
+        # triangles on the boundary: its straight seam edges are not lifted, splitting there
+        # would not end
+        lifted = np.linalg.norm(_lifted(patch, on, under) - flat, axis=1)
+        dev = np.where(boundary[local].any(axis=1), dev, lifted)
     far = dev > tol
     n0 = patch.normals[under]
     for k in range(3):
@@ -323,6 +327,18 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
     small = _area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
     return centre[(far & ~small) | across]
 
+
+
+def _lifted(patch, points, under):
+    """Points on the patch's chart triangles ``under``, lifted onto the exact surface."""
+    return patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
+
+
+def _on_surface(patch, vertices, query):
+    """(3-D points, chart triangles under them) of chart points: on the assembled triangles,
+    lifted onto the exact surface where the patch has one."""
+    xyz, under = locate(patch.uv, patch.tri, vertices[patch.ids], query, patch.find)
+    return (xyz if patch.lift is None else _lifted(patch, xyz, under)), under
 
 
 def _area3(p):
@@ -371,7 +387,7 @@ def _fans(triangles, splits):
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
-           turn=TURN, keep=()):
+           turn=TURN, keep=(), lift=None):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -382,7 +398,9 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     more than ``turn`` degrees (so it spans no more of a curved body's facets than the
     networks' own spacing). The surfaces in ``keep`` (indices into ``mesh.surfaces``) keep
     their triangles, taking their neighbours' seam points as fans. See the module docstring
-    for how seams stay shared.
+    for how seams stay shared. ``lift(points, corners, component, surface)`` (e.g.
+    :func:`juncture.surface.lift.body_lift`) moves new points from the triangle with vertex
+    ids ``corners`` onto the exact surface; seam points are never lifted.
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
@@ -391,6 +409,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     charted, kept = [], []
     for rows in _patches(mesh):
         patch = None if mesh.surface[rows[0]] in keep else _chart(mesh, rows)
+        if patch is not None:
+            patch.lift = lift
         (charted if patch is not None else kept).append(patch if patch is not None else rows)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size

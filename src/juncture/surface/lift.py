@@ -1,0 +1,171 @@
+"""New mesh points onto the exact surface of circular bodies and wing-like components.
+
+The re-triangulation (:mod:`juncture.surface.remesh`) finds each new point on the assembled
+surface's flat triangles. On a fuselage or pod those cut the circle by up to
+``r (1 - cos(dtheta / 2))`` (0.5 % of the radius at the transport's 12° spacing), and that is
+most of the enclosed volume's error. :func:`body_lift` moves a new point radially onto the
+body's circle at its station, ``c(x) + r(x) (p - c(x)) / |p - c(x)|``, where the flat
+triangle it lies on is the body's own: every corner on that circle (to 1e-9 of the size).
+A point on a fillet, a cap, a step between segments (whose triangles face along x) or a wing
+stays where it is, and seam
+points are never moved (they are made on the seam's straight edges, shared by both sides).
+
+A wing's networks join its ordinates by straight lines, where the model's sections are
+PCHIP curves through them (chordwise ``"pchip"``, the default): :func:`surface_lift` also
+moves a new point on a wing-like component's own triangle (every corner on the model's
+upper, or every corner on its lower, surface) along the thickness axis onto that surface at
+the same span station and chord fraction.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["surface_lift", "body_lift", "wing_lift", "ON_BODY"]
+
+#: A corner lies on its body's circle within this share of the airplane's size.
+ON_BODY = 1e-9
+#: A body's own triangle faces away from its centre line: |cos| of its normal's angle to the
+#: radial direction above this (a cap or a flat step between segments faces along x).
+FACING = 0.2
+
+
+#: A wing's triangle is lifted along the thickness axis only where it faces that way (|cos|
+#: of its normal's angle to the axis above this): near a leading edge the move would be
+#: along the surface and would distort the triangles.
+WING_FACING = 0.5
+
+
+def _normals(triangles):
+    """(k, 3) unit normals of triangles (k, 3, 3)."""
+    n = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
+    return n / np.maximum(np.linalg.norm(n, axis=1), np.finfo(float).tiny)[:, None]
+
+
+def _radial(triangles, unit):
+    """|cos| of the angle between each triangle's normal and the radial direction."""
+    return np.abs(np.einsum("ij,ij->i", _normals(triangles)[:, 1:], unit))
+
+
+def _models(geometry, mesh, kind):
+    """{component index: model} of the mesh's components that are ``kind``."""
+    comps = getattr(geometry, "configuration", None)
+    if comps is None:
+        return {}
+    by_name = {c.name: c for c in comps}
+    return {k: by_name[name] for k, name in enumerate(mesh.components)
+            if isinstance(by_name.get(name), kind)}
+
+
+def surface_lift(geometry, mesh):
+    """One ``lift`` for :func:`~juncture.surface.remesh.remesh` doing :func:`body_lift` on
+    circular bodies and :func:`wing_lift` on wing-like components (None if neither applies)."""
+    lifts = [f for f in (body_lift(geometry, mesh), wing_lift(geometry, mesh)) if f]
+    if not lifts:
+        return None
+
+    def lift(points, corners, component, surface):
+        for f in lifts:
+            points = f(points, corners, component, surface)
+        return points
+
+    return lift
+
+
+def _polar(body, points, image):
+    """(radius of the points about the body's centre line, its radius there, unit
+    directions (k, 2) in y-z) at the points' stations."""
+    centre, radius = body.section_at(points[:, 0])
+    if image:
+        centre = centre * [-1.0, 1.0]
+    d = points[:, 1:] - centre
+    rho = np.linalg.norm(d, axis=1)
+    return rho, radius, centre, d / np.where(rho > 0, rho, 1.0)[:, None]
+
+
+def body_lift(geometry, mesh):
+    """``lift(points, corners, component, surface)`` for :func:`~juncture.surface.remesh.
+    remesh`, or None when the geometry has no circular body.
+
+    ``corners`` (k, 3) are the ids of the vertices of ``mesh`` (the assembled surface) of the
+    flat triangle each point lies on; points on a body's own triangles are moved onto its
+    circle, the others returned as they are.
+    """
+    from ..model import CircularBody
+
+    bodies = _models(geometry, mesh, CircularBody)
+    if not bodies:
+        return None
+    vertices = np.asarray(mesh.vertices, float)
+    tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
+
+    def lift(points, corners, component, surface):
+        body = bodies.get(int(component))
+        name = mesh.surfaces[int(surface)]
+        if body is None or not len(points) or name.endswith(" cap"):
+            return points
+        image = name.endswith(" image")
+        rho, radius, _, _ = _polar(body, vertices[corners.ravel()], image)
+        on = (np.abs(rho - radius) <= tol).reshape(-1, 3).all(axis=1)
+        rho, radius, centre, unit = _polar(body, points, image)
+        on &= (radius > 0) & (rho > 0) & (_radial(vertices[corners], unit) > FACING)
+        out = np.array(points, float, copy=True)
+        out[on, 1:] = centre[on] + radius[on, None] * unit[on]
+        return out
+
+    return lift
+
+
+def _chordwise(wing, p):
+    """(span stations, chord fractions, inside the span) of points in the wing's frame."""
+    lo, hi = wing.span_stations[0], wing.span_stations[-1]
+    s = np.clip(p[:, wing.span_axis], lo, hi)
+    le = wing.point(s, 0.0, "upper")[:, 0]
+    te = wing.point(s, 1.0, "upper")[:, 0]
+    f = (p[:, 0] - le) / np.where(te > le, te - le, 1.0)
+    inside = (p[:, wing.span_axis] >= lo) & (p[:, wing.span_axis] <= hi) & (te > le)
+    return s, np.clip(f, 0.0, 1.0), inside & (f >= 0.0) & (f <= 1.0)
+
+
+def _thickness(wing, p):
+    """(upper, lower) thickness-axis coordinates of the model at the points' (s, f), and
+    whether (s, f) is inside the wing."""
+    s, f, inside = _chordwise(wing, p)
+    t = wing.thickness_axis
+    return wing.point(s, f, "upper")[:, t], wing.point(s, f, "lower")[:, t], inside
+
+
+def wing_lift(geometry, mesh):
+    """``lift(points, corners, component, surface)`` moving points on a wing-like
+    component's own triangles onto its model surface (see the module's docstring), or None
+    when the geometry has no wing-like component."""
+    from ..model import WingLike
+
+    wings = _models(geometry, mesh, WingLike)
+    if not wings:
+        return None
+    vertices = np.asarray(mesh.vertices, float)
+    tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
+
+    def lift(points, corners, component, surface):
+        wing = wings.get(int(component))
+        name = mesh.surfaces[int(surface)]
+        if wing is None or not len(points) or name.endswith(" cap"):
+            return points
+        flip = np.array([1.0, -1.0, 1.0]) if name.endswith(" image") else np.ones(3)
+        t = wing.thickness_axis
+        c = vertices[corners.ravel()] * flip
+        up, low, inside = _thickness(wing, c)
+        on_up = (inside & (np.abs(c[:, t] - up) <= tol)).reshape(-1, 3).all(axis=1)
+        on_low = (inside & (np.abs(c[:, t] - low) <= tol)).reshape(-1, 3).all(axis=1)
+        p = np.asarray(points, float) * flip
+        up, low, inside = _thickness(wing, p)
+        facing = np.abs(_normals(vertices[corners] * flip)[:, t]) > WING_FACING
+        on_up &= facing
+        on_low &= facing
+        out = p.copy()
+        out[:, t] = np.where(on_up & ~on_low & inside, up, out[:, t])
+        out[:, t] = np.where(on_low & ~on_up & inside, low, out[:, t])
+        return out * flip
+
+    return lift
