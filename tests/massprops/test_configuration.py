@@ -435,22 +435,30 @@ def test_run_massprops_spec(spec_file):
     assert [c["name"] for c in out["components"]] == ["tank", "ballast"]
 
 
-def test_run_massprops_deck(deck):
+def test_run_massprops_deck(deck, monkeypatch):
+    """The per-component table and the density (the enclosed solid, its own test in
+    test_closed.py, is computed for the first table only)."""
+    from juncture.massprops import command
+
     total, parts = configuration_mass_properties(deck)
+    table = run_massprops(EXAMPLE_DECK)
+    assert "uniform density 1 (mass = volume)" in table.splitlines()[0]
+    assert format_table(total, parts) + "enclosed solid (" in table   # then the one solid
+    monkeypatch.setattr(command, "enclosed_mass_properties", lambda cfg, rho: None)
     out = json.loads(run_massprops(EXAMPLE_DECK, as_json=True))
     assert out["total"]["mass"] == pytest.approx(total.mass, rel=1e-15)
     assert [c["name"] for c in out["components"]] == list(deck.components)
     np.testing.assert_allclose(out["components"][1]["inertia_origin"],
                                parts[1][1].inertia_origin)
-    table = run_massprops(EXAMPLE_DECK)
-    assert "uniform density 1 (mass = volume)" in table.splitlines()[0]
-    assert format_table(total, parts) + "enclosed solid (" in table   # then the one solid
     heavy = json.loads(run_massprops(EXAMPLE_DECK, as_json=True, density=2.0))
     assert heavy["total"]["mass"] == pytest.approx(2 * total.mass, rel=1e-14)
     assert "uniform density 2;" in run_massprops(EXAMPLE_DECK, density=2.0)
 
 
-def test_run_massprops_juncture_model_is_not_a_spec(deck, tmp_path):
+def test_run_massprops_juncture_model_is_not_a_spec(deck, tmp_path, monkeypatch):
+    from juncture.massprops import command
+
+    monkeypatch.setattr(command, "enclosed_mass_properties", lambda cfg, rho: None)
     path = tmp_path / "model.json"
     jc.write(deck, path)
     assert not is_massprops_spec(path) and not is_massprops_spec(EXAMPLE_DECK)

@@ -432,3 +432,21 @@ def test_the_old_import_paths_still_work_and_warn():
 
     assert juncture.report.write_report is write_report
     assert juncture.plots_juncture.plot_fillet_sections is plots_juncture.plot_fillet_sections
+
+
+def test_the_closed_surface_section(run):
+    """The completed airplane's one closed surface: its volume, centre and wetted areas as
+    the surface computes them (overlaps once), and a key number; or why there is none."""
+    surface = jc.mesh(run["geo"], min_angle=0.0)
+    text = render_report(run["cfg"], run["geo"], figures={}, surface=surface)
+    page = Page(text)
+    rows = {r[0].split(" [")[0]: r[1] for r in page.tables["surface"][1:]}
+    assert float(rows["enclosed volume"]) == pytest.approx(surface.volume(), rel=1e-8)
+    wetted = surface.wetted_area()
+    assert float(rows["total"]) == pytest.approx(wetted["total"], rel=1e-5)
+    assert float(rows["wing"]) == pytest.approx(wetted["wing"], rel=1e-5)
+    cg = [float(c) for c in rows["centre of volume"].split(",")]
+    np.testing.assert_allclose(cg, surface.mass_properties().cg, rtol=1e-5, atol=1e-6)
+    assert "enclosed volume (overlaps once)" in text  # a key number in the header
+    text = render_report(run["cfg"], run["geo"], figures={}, surface="3 open loops")
+    assert "No closed surface: 3 open loops" in text

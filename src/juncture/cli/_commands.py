@@ -175,15 +175,23 @@ def wavedrag_cases(cfg, geo, fillet, keep_area, progress):
     return cases
 
 
-def write_report(cfg, geo, out, *, command, units, cases, mass=None):
-    """report.html with the wave drag of each case and the mass properties."""
+def write_report(cfg, geo, out, *, command, units, cases, mass=None, surface=None):
+    """report.html with the wave drag of each case, the mass properties and the closed
+    surface (``surface``; by default :func:`juncture.mesh` of ``geo``, or why it has none)."""
+    from ..errors import GeometryError
     from ..massprops import configuration_mass_properties
     from ..plots import write_report as render
+    from ..surface.pipeline import mesh
 
     if mass is None:
         mass = configuration_mass_properties(geo.configuration or cfg)
+    if surface is None:
+        try:
+            surface = mesh(geo)
+        except GeometryError as exc:
+            surface = str(exc)
     render(out / "report.html", cfg, geo, wavedrag=cases, massprops=mass, command=command,
-           units=units)
+           units=units, surface=surface)
     return "report.html"
 
 

@@ -50,17 +50,18 @@ def demo(args, progress):
         written += ["wavedrag_areas.png", "wavedrag.json"]
         bar.step("closed mesh and mass properties")
         total, parts = configuration_mass_properties(geo.configuration)
-        solid = _closed_mesh(geo, out, written)
+        surface = _closed_mesh(geo, out, written)
         with atomic_output(out / "massprops.txt") as fh:
             fh.write(format_table(total, parts) + "\n")
-            if solid is not None:
+            if not isinstance(surface, str):
+                solid = surface.mass_properties()
                 fh.write(f"enclosed solid of mesh.stl (overlaps counted once): volume "
                          f"{solid.volume:.6g}, centre " + ", ".join(f"{c:.6g}" for c in
                                                                       solid.cg) + "\n")
         written.append("massprops.txt")
         bar.step("report")
         written.append(write_report(cfg, geo, out, command="juncture demo", units=args.units,
-                                    cases=cases, mass=(total, parts)))
+                                    cases=cases, mass=(total, parts), surface=surface))
     base = cases["original"]["D_over_q"]
     for label, r in cases.items():
         _say(args, f"  wave drag {label:<26} D/q {r['D_over_q']:10.5g}  "
@@ -70,8 +71,8 @@ def demo(args, progress):
 
 
 def _closed_mesh(geo, out, written):
-    """mesh.stl, the completed airplane as one closed surface, and its enclosed solid's
-    mass properties; None (with a line saying why) where it does not close."""
+    """mesh.stl, the completed airplane as one closed surface; the surface, or (with a line
+    saying so) why it does not close."""
     from ..errors import GeometryError
     from ..surface.pipeline import mesh
     from ..surface.write import write_mesh
@@ -80,6 +81,6 @@ def _closed_mesh(geo, out, written):
         surface = mesh(geo)
     except GeometryError as exc:
         print(f"juncture demo: no mesh.stl: {exc}")
-        return None
+        return str(exc)
     written.append(write_mesh(surface, out / "mesh.stl").name)
-    return surface.mass_properties()
+    return surface

@@ -108,9 +108,9 @@ def enclosed_mass_properties(cfg, density=1.0):
     """Mass properties of the completed airplane's one closed surface (overlaps counted
     once: a buried wing root is not counted twice), or the one-line reason it has none.
 
-    The configuration is completed (no fillet) and assembled (:func:`juncture.mesh` with the
-    networks' own triangles), and the solid it encloses integrated exactly
-    (:func:`juncture.massprops.surface_mass_properties`).
+    The configuration is completed (no fillet) and meshed as ``juncture mesh DECK`` meshes it
+    (:func:`juncture.mesh`, default sizing, checked), so the two agree; the solid it
+    encloses is integrated exactly (:func:`juncture.massprops.surface_mass_properties`).
     """
     import warnings
 
@@ -121,7 +121,7 @@ def enclosed_mass_properties(cfg, density=1.0):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", JunctureWarning)
-            surface = mesh(complete(cfg), min_angle=0)
+            surface = mesh(complete(cfg))
     except JunctureError as exc:
         return str(exc)
     return surface.mass_properties(density).renamed("enclosed solid")

@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import base64
 import datetime as _dt
-import html
 import io
 import json
 import shlex
@@ -31,7 +30,9 @@ from ..errors import JunctureError
 from ..geometry import Geometry
 from ..io._registry import atomic_output
 from .report_css import REPORT_CSS
+from .report_html import _e, _num, _section, _table, _u
 from .report_js import REPORT_JS
+from .report_surface import closed_surface_key, closed_surface_section
 from .style import DEFAULT_UNITS, INTERSECTION_COLOUR, component_colour, component_of, unit_label
 
 __all__ = ["write_report", "render_report", "wireframe_data"]
@@ -42,40 +43,6 @@ _STATION_COLUMNS = (("x", "x", 1), ("area_original", "original area", 2),
                     ("area_fillet", "fillet area", 2), ("area_body", "body area", 2),
                     ("radius_original", "original radius", 1), ("radius_new", "new radius", 1),
                     ("residual", "residual", 0))
-
-
-# ------------------------------------------------------------------ small HTML helpers
-def _e(text):
-    return html.escape(str(text), quote=True)
-
-
-def _num(value, fmt=".6g"):
-    if value is None:
-        return "&ndash;"
-    v = float(value)
-    return format(v, fmt) if np.isfinite(v) else _e(v)
-
-
-def _table(headers, rows, total=None, text_columns=(0,)):
-    """An HTML table; ``rows`` hold already-escaped cell strings."""
-    head = "".join(f'<th class="text">{_e(h)}</th>' if i and i in text_columns
-                   else f"<th>{_e(h)}</th>" for i, h in enumerate(headers))
-    body = []
-    for row in list(rows) + ([total] if total else []):
-        cells = "".join(f'<td class="text">{c}</td>' if i and i in text_columns
-                        else f"<td>{c}</td>" for i, c in enumerate(row))
-        body.append(f'<tr class="total">{cells}</tr>' if row is total else f"<tr>{cells}</tr>")
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>"
-
-
-def _section(ident, heading, body):
-    """(id, heading, HTML) of one report section."""
-    return ident, heading, f'<section id="{ident}"><h2>{_e(heading)}</h2>{body}</section>'
-
-
-def _u(units, power=1):
-    """`` [unit]`` for a table heading (nothing for a ratio)."""
-    return f" [{unit_label(units, power)}]" if power else ""
 
 
 # ------------------------------------------------------------------ 3-D view data
@@ -371,7 +338,7 @@ def _figures(figures, dpi):
     return _section("figures", "Figures", "".join(parts)) if parts else None
 
 
-def _keys(geo, wavedrag, massprops, units):
+def _keys(geo, wavedrag, massprops, units, surface=None):
     st, items = geo.stations, [(str(len(geo.networks)), "networks")]
     if "x" in st and len(st["x"]):
         items.append((str(len(st["x"])), "fillet stations"))
@@ -395,13 +362,16 @@ def _keys(geo, wavedrag, massprops, units):
                           "total mass (density 1: mass = volume)"))
         else:
             items.append((_num(massprops[0].mass, ".5g"), f"total mass [{mass_unit}]"))
+    key = closed_surface_key(surface, units)
+    if key:
+        items.append(key)
     return '<div class="keys">' + "".join(f"<div><b>{v}</b><small>{_e(k)}</small></div>"
                                           for v, k in items) + "</div>"
 
 
 # ------------------------------------------------------------------ public API
 def render_report(cfg, geo, *, wavedrag=None, massprops=None, figures=None, title=None,
-                  command=None, dpi=100, units=DEFAULT_UNITS):
+                  command=None, dpi=100, units=DEFAULT_UNITS, surface=None):
     """The report of a run as one HTML string (see :func:`write_report`)."""
     if not isinstance(geo, Geometry):
         raise JunctureError(f"the report needs a Geometry (from juncture.complete), found "
@@ -423,6 +393,7 @@ def render_report(cfg, geo, *, wavedrag=None, massprops=None, figures=None, titl
         sections.append(_wavedrag(wavedrag, units))
     if massprops is not None:
         sections.append(_massprops(massprops, units))
+    sections.append(closed_surface_section(surface, units))
     own = figures is None
     figs = _default_figures(cfg, geo, wavedrag, units) if own else dict(figures)
     try:
@@ -445,13 +416,13 @@ def render_report(cfg, geo, *, wavedrag=None, massprops=None, figures=None, titl
             f"<meta name=\"generator\" content=\"juncture {_e(__version__)}\">"
             f"<title>{_e(heading)}</title><style>{REPORT_CSS}</style></head><body>"
             f'<header><h1>{_e(heading)}</h1><div class="meta">{meta}</div>'
-            f"{_keys(geo, wavedrag, massprops, units)}</header><nav>{nav}</nav><main>"
+            f"{_keys(geo, wavedrag, massprops, units, surface)}</header><nav>{nav}</nav><main>"
             f"{''.join(s for _, _, s in sections)}</main>"
             f"<script>{REPORT_JS}</script></body></html>\n")
 
 
 def write_report(path, cfg, geo, *, wavedrag=None, massprops=None, figures=None, title=None,
-                 command=None, units=DEFAULT_UNITS) -> Path:
+                 command=None, units=DEFAULT_UNITS, surface=None) -> Path:
     """Write a self-contained HTML report of a juncture run; return its path.
 
     Parameters
@@ -469,6 +440,9 @@ def write_report(path, cfg, geo, *, wavedrag=None, massprops=None, figures=None,
         reference of the "change" column.
     massprops : (MassProperties, list of (str, MassProperties)), optional
         ``(total, parts)`` from :func:`juncture.massprops.configuration_mass_properties`.
+    surface : SurfaceMesh or str, optional
+        The completed airplane's closed surface (:func:`juncture.mesh`): its enclosed volume,
+        wetted areas and triangle quality get a section; a str says why there is none.
     figures : mapping of str to (matplotlib Figure or path of a PNG), optional
         Caption -> figure, embedded as base64 PNG in this order. None: the report draws its
         own (three views; the juncture figures that apply, those of the fillet when there is
@@ -505,7 +479,7 @@ def write_report(path, cfg, geo, *, wavedrag=None, massprops=None, figures=None,
     True
     """
     text = render_report(cfg, geo, wavedrag=wavedrag, massprops=massprops, figures=figures,
-                         title=title, command=command, units=units)
+                         title=title, command=command, units=units, surface=surface)
     path = Path(path)
     with atomic_output(path, "w", encoding="utf-8") as fh:
         fh.write(text)
