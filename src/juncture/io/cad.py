@@ -31,7 +31,7 @@ from ._cad_write import CAD_UNITS
 from ._registry import atomic_output, register_format, to_geometry
 
 __all__ = ["CAD_UNITS", "write_step", "write_iges", "write_shapes", "write_bspline_surfaces",
-           "ocp_api", "network_face", "section_points"]
+           "ocp_api", "network_face", "section_points", "cad_kind"]
 
 _INSTALL = "pip install juncture[cad]"
 
@@ -295,16 +295,22 @@ def write_bspline_surfaces(surfaces, path):
     JunctureError
         For an unknown extension; MissingDependencyError without OCP.
     """
+    kind = cad_kind(path)
+    api = ocp_api()
+    faces = [_bspline_face(api, s) for s in surfaces]
+    if not faces:
+        raise GeometryError("no surfaces to write")
+    return _write_faces(api, faces, path, kind)
+
+
+def cad_kind(path):
+    """``"step"`` or ``"iges"`` from a file's extension (a JunctureError for another)."""
     suffix = Path(path).suffix.lower()
     kinds = {".step": "step", ".stp": "step", ".igs": "iges", ".iges": "iges"}
     if suffix not in kinds:
         raise JunctureError(f"cannot tell STEP or IGES from the extension {suffix!r} of "
                             f"{str(path)!r}; use .step, .stp, .igs or .iges")
-    api = ocp_api()
-    faces = [_bspline_face(api, s) for s in surfaces]
-    if not faces:
-        raise GeometryError("no surfaces to write")
-    return _write_faces(api, faces, path, kinds[suffix])
+    return kinds[suffix]
 
 
 register_format("step", (".step", ".stp"), writer=write_step)

@@ -83,6 +83,27 @@ def _polar(body, points, image):
     return rho, radius, centre, d / np.where(rho > 0, rho, 1.0)[:, None]
 
 
+def _lifter(geometry, mesh, kind, move):
+    """``lift(points, corners, component, surface)`` calling ``move(model, points, corners
+    (k, 3, 3), image, tol)`` for points on components of type ``kind`` (caps excluded), or
+    None when the geometry has none."""
+    models = _models(geometry, mesh, kind)
+    if not models:
+        return None
+    vertices = np.asarray(mesh.vertices, float)
+    tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
+
+    def lift(points, corners, component, surface):
+        model = models.get(int(component))
+        name = mesh.surfaces[int(surface)]
+        if model is None or not len(points) or name.endswith(" cap"):
+            return points
+        return move(model, np.asarray(points, float), vertices[corners],
+                    name.endswith(" image"), tol)
+
+    return lift
+
+
 def body_lift(geometry, mesh):
     """``lift(points, corners, component, surface)`` for :func:`~juncture.surface.remesh.
     remesh`, or None when the geometry has no circular body.
@@ -93,27 +114,17 @@ def body_lift(geometry, mesh):
     """
     from ..model import CircularBody
 
-    bodies = _models(geometry, mesh, CircularBody)
-    if not bodies:
-        return None
-    vertices = np.asarray(mesh.vertices, float)
-    tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
+    return _lifter(geometry, mesh, CircularBody, _onto_circle)
 
-    def lift(points, corners, component, surface):
-        body = bodies.get(int(component))
-        name = mesh.surfaces[int(surface)]
-        if body is None or not len(points) or name.endswith(" cap"):
-            return points
-        image = name.endswith(" image")
-        rho, radius, _, _ = _polar(body, vertices[corners.ravel()], image)
-        on = (np.abs(rho - radius) <= tol).reshape(-1, 3).all(axis=1)
-        rho, radius, centre, unit = _polar(body, points, image)
-        on &= (radius > 0) & (rho > 0) & (_radial(vertices[corners], unit) > FACING)
-        out = np.array(points, float, copy=True)
-        out[on, 1:] = centre[on] + radius[on, None] * unit[on]
-        return out
 
-    return lift
+def _onto_circle(body, points, corners, image, tol):
+    rho, radius, _, _ = _polar(body, corners.reshape(-1, 3), image)
+    on = (np.abs(rho - radius) <= tol).reshape(-1, 3).all(axis=1)
+    rho, radius, centre, unit = _polar(body, points, image)
+    on &= (radius > 0) & (rho > 0) & (_radial(corners, unit) > FACING)
+    out = points.copy()
+    out[on, 1:] = centre[on] + radius[on, None] * unit[on]
+    return out
 
 
 def _chordwise(wing, p):
@@ -141,31 +152,21 @@ def wing_lift(geometry, mesh):
     when the geometry has no wing-like component."""
     from ..model import WingLike
 
-    wings = _models(geometry, mesh, WingLike)
-    if not wings:
-        return None
-    vertices = np.asarray(mesh.vertices, float)
-    tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
+    return _lifter(geometry, mesh, WingLike, _onto_sections)
 
-    def lift(points, corners, component, surface):
-        wing = wings.get(int(component))
-        name = mesh.surfaces[int(surface)]
-        if wing is None or not len(points) or name.endswith(" cap"):
-            return points
-        flip = np.array([1.0, -1.0, 1.0]) if name.endswith(" image") else np.ones(3)
-        t = wing.thickness_axis
-        c = vertices[corners.ravel()] * flip
-        up, low, inside = _thickness(wing, c)
-        on_up = (inside & (np.abs(c[:, t] - up) <= tol)).reshape(-1, 3).all(axis=1)
-        on_low = (inside & (np.abs(c[:, t] - low) <= tol)).reshape(-1, 3).all(axis=1)
-        p = np.asarray(points, float) * flip
-        up, low, inside = _thickness(wing, p)
-        facing = np.abs(_normals(vertices[corners] * flip)[:, t]) > WING_FACING
-        on_up &= facing
-        on_low &= facing
-        out = p.copy()
-        out[:, t] = np.where(on_up & ~on_low & inside, up, out[:, t])
-        out[:, t] = np.where(on_low & ~on_up & inside, low, out[:, t])
-        return out * flip
 
-    return lift
+def _onto_sections(wing, points, corners, image, tol):
+    flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
+    t = wing.thickness_axis
+    corners = corners * flip
+    c = corners.reshape(-1, 3)
+    up, low, inside = _thickness(wing, c)
+    facing = np.abs(_normals(corners)[:, t]) > WING_FACING
+    on_up = (inside & (np.abs(c[:, t] - up) <= tol)).reshape(-1, 3).all(axis=1) & facing
+    on_low = (inside & (np.abs(c[:, t] - low) <= tol)).reshape(-1, 3).all(axis=1) & facing
+    p = points * flip
+    up, low, inside = _thickness(wing, p)
+    out = p.copy()
+    out[:, t] = np.where(on_up & ~on_low & inside, up, out[:, t])
+    out[:, t] = np.where(on_low & ~on_up & inside, low, out[:, t])
+    return out * flip

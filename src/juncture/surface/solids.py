@@ -101,18 +101,12 @@ def write_solids(geometry, path, kind="components", units="ft", mirror=True):
         For an unknown kind, extension or unit; GeometryError where a solid does not close;
         MissingDependencyError without OCP.
     """
-    from pathlib import Path
-
     from ..io._cad_write import cad_unit
-    from ..io.cad import ocp_api, write_shapes
+    from ..io.cad import cad_kind, ocp_api, write_shapes
 
     if kind not in KINDS:
         raise JunctureError(f"CAD content {kind!r}: expected one of {', '.join(KINDS)}")
-    suffix = Path(path).suffix.lower()
-    kinds = {".step": "step", ".stp": "step", ".igs": "iges", ".iges": "iges"}
-    if suffix not in kinds:
-        raise JunctureError(f"cannot tell STEP or IGES from the extension {suffix!r} of "
-                            f"{str(path)!r}; use .step, .stp, .igs or .iges")
+    file_kind = cad_kind(path)
     cad_unit(units)
     api = ocp_api()
-    return write_shapes(solid_shapes(api, geometry, kind, mirror), path, kinds[suffix], units)
+    return write_shapes(solid_shapes(api, geometry, kind, mirror), path, file_kind, units)
