@@ -188,31 +188,29 @@ SHORTEST_EDGE = 1e-6
 def _collapse_short_edges(vertices, triangles):
     """Triangles with the ends of every edge shorter than :data:`SHORTEST_EDGE` merged (onto
     the lower vertex id) and the triangles that collapse dropped."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
     pairs = triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
     short = np.linalg.norm(np.diff(vertices[pairs], axis=1)[:, 0], axis=1) < SHORTEST_EDGE
     if not short.any():
         return triangles
-    a, b = pairs[short].T
     n = len(vertices)
-    _, label = connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)))
+    label = _linked(*pairs[short].T, n)
     first = np.full(label.max() + 1, n)
     np.minimum.at(first, label, np.arange(n))
     out = first[label][triangles]
     return out[(out[:, 0] != out[:, 1]) & (out[:, 1] != out[:, 2]) & (out[:, 0] != out[:, 2])]
 
 
-def _bodies(triangles, n):
-    """(m,) label of the closed body (connected part) each triangle belongs to."""
+def _linked(a, b, n):
+    """(n,) label of the group of vertices linked by the pairs (a, b)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
-    a = triangles[:, [0, 1, 2]].ravel()
-    b = triangles[:, [1, 2, 0]].ravel()
-    _, label = connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)))
-    return label[triangles[:, 0]]
+    return connected_components(coo_matrix((np.ones(a.size), (a, b)), shape=(n, n)))[1]
+
+
+def _bodies(triangles, n):
+    """(m,) label of the closed body (connected part) each triangle belongs to."""
+    return _linked(triangles.ravel(), triangles[:, [1, 2, 0]].ravel(), n)[triangles[:, 0]]
 
 
 def mesh_solid(api, vertices, triangles):
