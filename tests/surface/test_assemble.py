@@ -157,3 +157,22 @@ def test_a_closed_pod_tail_off_the_origin_is_one_point():
     ring = pod.point(np.full(37, x_end), np.linspace(0.5 * np.pi, 2.5 * np.pi, 37))
     assert len(np.unique(ring + 0.0, axis=0)) == 1
     assert pod.radius_at(x_end) == 0.0
+
+
+def test_points_on_the_mirror_plane_are_shared_by_both_halves():
+    """A half tube whose edge points lie on y = 0 by r cos(pi / 2) (6e-17 r, not 0): both
+    halves share them, so the tube closes with its two end caps and nothing else (no strip
+    of zero width along the plane)."""
+    theta = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 7)
+    x = np.linspace(0.0, 4.0, 5)
+    net = np.stack(np.broadcast_arrays(x[:, None], 2.0 * np.cos(theta)[None, :],
+                                       2.0 * np.sin(theta)[None, :]), axis=-1)
+    assert 0.0 < abs(net[0, 0, 1]) < 1e-15
+    surface = assemble(Geometry(networks={"tube": net}, symmetry={"tube": "xz"}))
+    assert not surface.open_loops
+    caps = np.array([s.endswith(" cap") for s in surface.surfaces])[surface.surface]
+    p = surface.vertices[surface.triangles[caps]]
+    assert np.allclose(p[..., 0].min(axis=1), p[..., 0].max(axis=1))  # the end caps only
+    assert surface.areas().min() > 0.0
+    assert surface.volume() == pytest.approx(4.0 * 0.5 * 12 * 2.0 ** 2 * np.sin(np.pi / 6),
+                                             rel=1e-12)  # length x the 12-gon

@@ -3,7 +3,9 @@
 The networks' quads are split into triangles along their shorter diagonal; vertices are
 shared where coordinates are **bit-identical** (never by a welding tolerance: a seam closes
 only where both networks carry the same points, as juncture's layouts make them), and
-triangles that collapse (two equal corners) are dropped. What is left open is then looked at
+triangles that collapse (two equal corners) are dropped. A point of a mirrored network
+within 1e-12 of the size from its mirror plane is put on it first, in both halves (``r
+cos(pi / 2)`` is 6e-17 r, not 0: its image would leave a slit of zero width). What is left open is then looked at
 loop by loop: a boundary loop that lies in one plane (a wing or fin tip, a blunt base, a
 nacelle's open end) is capped by a triangulation of the plane polygon, oriented against the
 loop so the surface stays consistently oriented; a loop made of two chains that pair up point
@@ -351,6 +353,29 @@ def _imprint_all(geometry, vertices, triangles, component, surface, components):
     return np.concatenate(new_tri), np.concatenate(new_comp), np.concatenate(new_surf)
 
 
+#: A point of a mirrored network this close to its mirror plane (a share of the size) lies on
+#: it: ``r cos(pi / 2)`` is 6e-17 r, and its image would leave a slit of zero width.
+ON_PLANE = 1e-12
+
+
+def _on_plane(geometry, nets):
+    """``nets`` with the points of mirrored networks that lie on their plane put on it
+    exactly, in the network and in its image, so that the two halves share them."""
+    from ..geometry import _AXIS_OF_PLANE
+
+    size = float(np.max(np.ptp(geometry.extents(), axis=0))) or 1.0
+    out = dict(nets)
+    for name, plane in geometry.symmetry.items():
+        axis = _AXIS_OF_PLANE[plane]
+        for key in (name, f"{name} image"):
+            net = np.array(out[key], float)
+            near = np.abs(net[..., axis]) <= ON_PLANE * size
+            if near.any():
+                net[..., axis] = np.where(near, 0.0, net[..., axis])
+                out[key] = net
+    return out
+
+
 def assemble(geometry, mirror=True, cap=True):
     """The networks of ``geometry`` as one :class:`SurfaceMesh` (see the module docstring).
 
@@ -364,6 +389,8 @@ def assemble(geometry, mirror=True, cap=True):
         Cap planar boundary loops (tips, blunt bases, open nacelle ends).
     """
     nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
+    if mirror:
+        nets = _on_plane(geometry, nets)
     owners = [geometry.component_of(name) for name in nets]
     components = tuple(dict.fromkeys(owners))
     pts, tris, comp_id, surf_id, offset = [], [], [], [], 0
