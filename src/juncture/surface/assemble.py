@@ -5,14 +5,14 @@ shared where coordinates are **bit-identical** (never by a welding tolerance: a 
 only where both networks carry the same points, as juncture's layouts make them), and
 triangles that collapse (two equal corners) are dropped. A point of a mirrored network
 within 1e-12 of the size from its mirror plane is put on it first, in both halves (``r
-cos(pi / 2)`` is 6e-17 r, not 0: its image would leave a slit of zero width). What is left open is then looked at
-loop by loop: a boundary loop that lies in one plane (a wing or fin tip, a blunt base, a
-nacelle's open end) is capped by a triangulation of the plane polygon, oriented against the
-loop so the surface stays consistently oriented; a loop made of two chains that pair up point
-by point within a few per cent of its length (a blunt trailing edge between the upper and the
-lower surface's last lines) is closed by the ruled strip between them; any other loop (a seam
-whose two sides differ) stays open and is reported, so that a caller never gets a surface
-closed by guesswork.
+cos(pi / 2)`` is 6e-17 r, not 0: its image would leave a slit of zero width). What is left
+open is then looked at loop by loop: a boundary loop that lies in one plane (a wing or fin
+tip, a blunt base, a nacelle's open end) is capped by a triangulation of the plane polygon,
+oriented against the loop so the surface stays consistently oriented; a loop made of two
+chains that pair up point by point within a few per cent of its length (a blunt trailing
+edge between the upper and the lower surface's last lines) is closed by the ruled strip
+between them; any other loop (a seam whose two sides differ) stays open and is reported, so
+that a caller never gets a surface closed by guesswork.
 
 Orientation follows the networks' (``docs/conventions.md``: outward normals); the enclosed
 volume is the divergence-theorem sum over the triangles, the wetted area the sum of their
