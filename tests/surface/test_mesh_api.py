@@ -41,7 +41,7 @@ def test_the_complete_transport_closes_pods_pylons_fins_and_tail_included():
     """Every seam of the bundled airplane: wing/body, pylons on the wing (cut into its lower
     surface) and on their nacelles, the centre fin and the tail on the fuselage."""
     geo = _complete(EXAMPLE_DECK)
-    surface = jc.mesh(geo)                       # checked: closed, oriented, no crossing
+    surface = jc.mesh(geo, min_angle=0)  # checked; the re-triangulation: test_remesh, test_lift
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     assert tm.volume == pytest.approx(surface.volume(), rel=1e-12)
@@ -52,12 +52,11 @@ def test_the_complete_transport_closes_pods_pylons_fins_and_tail_included():
             assert tuple((p + 0.0).tolist()) in verts, name
             assert tuple((p * [1.0, -1.0, 1.0] + 0.0).tolist()) in verts, name
     # Independent of the networks: the model's union of normal areas A(x), integrated.
-    # The mesh's flat triangles cut the curved surfaces' chords, so it is below the model's
-    # volume by their sag (new points lie on the exact surfaces: -0.7 %; the networks' own
-    # triangles: -1 %).
+    # The mesh's flat panels between network points cut the curved surfaces' chords, so it
+    # is below the model's volume by their sag (about 1 % at the networks' spacing).
     dist = normal_area_distribution(geo.configuration, n_x=801, flow_through=False)
     exact = np.trapezoid(dist["total"], dist["x"])
-    assert -0.008 < surface.volume() / exact - 1.0 < 0.0
+    assert -0.015 < surface.volume() / exact - 1.0 < 0.0
     names = set(surface.components)
     assert {"body", "wing", "pod 1", "pod 2", "fin 1", "fin 2", "fin 3", "tail 1"} <= names
 
