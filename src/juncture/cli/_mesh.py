@@ -37,7 +37,6 @@ def add_parser(sub, common):
 
 def run(args, progress):
     """Complete, assemble, check; write only a mesh that is closed and oriented."""
-    import numpy as np
 
     from ..completion import complete
     from ..surface.assemble import assemble
@@ -83,9 +82,7 @@ def run(args, progress):
     if not getattr(args, "quiet", False):
         print("\n".join(summary.lines()))
         mp = mesh.mass_properties()
-        size = float(np.ptp(mesh.vertices, axis=0).max())
-        cg = np.where(np.abs(mp.cg) > 1e-12 * size, mp.cg, 0.0)  # round-off on a plane
-        print("centre of volume " + ", ".join(f"{c:.6g}" for c in cg)
+        print("centre of volume " + ", ".join(f"{c:.6g}" for c in mesh.centre_of_volume())
               + "; inertia per unit density about it Ixx, Iyy, Izz "
               + ", ".join(f"{mp.inertia[i, i]:.6g}" for i in range(3))
               + " (the enclosed solid, overlaps counted once)")

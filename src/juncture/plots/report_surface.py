@@ -8,8 +8,6 @@ surface does not close, the section says why in one line.
 
 from __future__ import annotations
 
-import numpy as np
-
 from .report_html import _e, _num, _section, _table, _u
 from .style import unit_label
 
@@ -27,9 +25,7 @@ def closed_surface_section(surface, units):
     from ..surface.quality import summarize
 
     summary = summarize(surface)
-    mp = surface.mass_properties()
-    size = float(np.ptp(surface.vertices, axis=0).max())
-    cg = np.where(np.abs(mp.cg) > 1e-12 * size, mp.cg, 0.0)
+    cg = surface.centre_of_volume()
     facts = [["triangles", str(summary.n_triangles)],
              ["vertices", str(summary.n_vertices)],
              [f"enclosed volume{_u(units, 3)}", _num(summary.volume, ".8g")],

@@ -69,6 +69,13 @@ class SurfaceMesh:
 
         return surface_mass_properties(self.vertices, self.triangles, density, "surface")
 
+    def centre_of_volume(self):
+        """(3,) centroid of the enclosed solid, a coordinate within 1e-12 of the size from 0
+        (round-off on a plane of symmetry) written as 0."""
+        cg = np.asarray(self.mass_properties().cg, float)
+        size = float(np.ptp(self.vertices, axis=0).max())
+        return np.where(np.abs(cg) > 1e-12 * size, cg, 0.0)
+
     def areas(self):
         """(m,) triangle areas."""
         p = self.vertices[self.triangles]
