@@ -91,11 +91,57 @@ def _wing_cut(span, weight, poly, axis, mirror, beta, theta, offsets):
     return out
 
 
-def _body_cut(body, mirror, beta, theta, offsets, n_grid, held, tube):
+def _series_basis(th, n_modes):
+    """(k, n_modes): the coefficient of a_n in S(theta) / (l/4)."""
+    n = np.arange(2, n_modes + 1)
+    return np.concatenate([(th - np.sin(2 * th) / 2)[:, None],
+                           np.sin(np.outer(th, n - 1)) / (n - 1)
+                           - np.sin(np.outer(th, n + 1)) / (n + 1)], axis=1)
+
+
+def least_drag_curve(x, area, xq, n_modes=3000):
+    """Area at xq of the least-drag series through (x, area) started at area[0] (numpy)."""
+    length = x[-1] - x[0]
+    th = np.arccos(np.clip(1.0 - 2.0 * (x[1:] - x[0]) / length, -1, 1))
+    c = _series_basis(th, n_modes) * length / 4
+    cw = c / np.arange(1, n_modes + 1)
+    a = cw.T @ np.linalg.solve(cw @ c.T, area[1:] - area[0])
+    thq = np.arccos(np.clip(1.0 - 2.0 * (xq - x[0]) / length, -1, 1))
+    return area[0] + (length / 4) * (_series_basis(thq, n_modes) @ a)
+
+
+_FITTED = {}
+
+
+def _fitted_radius(body, xt):
+    """The fuselage radius at xt from each segment's own least-drag area curve (a gap between
+    segments: the radius linear from one segment's last station to the next one's first)."""
+    key = (id(body), xt.size, float(xt[0]), float(xt[-1]))
+    if key not in _FITTED:
+        if len(_FITTED) > 8:
+            _FITTED.clear()
+        _FITTED[key] = (body, _fit_radius(body, xt))  # the body held: its id stays unique
+    return _FITTED[key][1]
+
+
+def _fit_radius(body, xt):
+    xg, start = body.x_global, 0
+    r = np.interp(xt, xg, body.radius)  # in gaps; overwritten within segments
+    for count in body.segments:
+        xs, rs = xg[start:start + count], body.radius[start:start + count]
+        start += count
+        on = (xt >= xs[0]) & (xt <= xs[-1])
+        xf = np.linspace(xs[0], xs[-1], 2001)  # tabulated, then interpolated
+        sf = least_drag_curve(xs, np.pi * rs**2, xf)
+        r[on] = np.sqrt(np.maximum(np.interp(xt[on], xf, sf), 0) / np.pi)
+    return r
+
+
+def _body_cut(body, mirror, beta, theta, offsets, n_grid, held, tube, fit):
     """Projected cut areas of one circular body copy (membership on a y-z grid)."""
     x0, x1 = body.x_global[0], body.x_global[-1]
     xt = np.linspace(x0, x1, 40001)
-    r = body.radius_at(xt)
+    r = _fitted_radius(body, xt) if fit else body.radius_at(xt)
     zc = body.center_at(xt)[:, 1]
     yc = mirror * body.origin[1]
     reach = r.max()
@@ -126,7 +172,7 @@ def _body_cut(body, mirror, beta, theta, offsets, n_grid, held, tube):
     return out
 
 
-def _extent(cfg, beta, theta):
+def _extent(cfg, beta, theta, fusard_fit=False):
     """First and last plane offset touching the configuration (dense surface samples)."""
     lo, hi = np.inf, -np.inf
     c, s = np.cos(theta), np.sin(theta)
@@ -136,6 +182,8 @@ def _extent(cfg, beta, theta):
             ph = np.linspace(0, 2 * np.pi, 721)
             xs = np.linspace(*comp.x_global[[0, -1]], 2001)
             cen, rad = comp.section_at(xs)
+            if fusard_fit and not comp.name.startswith("pod"):
+                rad = _fitted_radius(comp, xs)
             pts = np.stack([np.repeat(xs, ph.size), np.repeat(cen[:, 0], ph.size)
                             + np.outer(rad, np.cos(ph)).ravel(),
                             np.repeat(cen[:, 1], ph.size) + np.outer(rad, np.sin(ph)).ravel()],
@@ -165,14 +213,17 @@ def least_drag(x, area, n_modes=3000):
     return np.pi / 4 * np.sum(n * a * a)
 
 
-def harris_far_field(cfg, mach, n_x, n_theta, wing_points=64, n_grid=300):
-    """D/q of a deck's configuration with the Harris conventions, computed independently."""
+def harris_far_field(cfg, mach, n_x, n_theta, wing_points=64, n_grid=300, fusard_fit=True):
+    """D/q of a deck's configuration with the Harris conventions, computed independently.
+
+    ``fusard_fit``: a circular body other than a pod has, within each segment, the least-drag
+    area curve through its given areas (a finite series of 3000 modes solved by numpy)."""
     beta = np.sqrt(mach * mach - 1.0)
     thetas = np.linspace(-0.5 * np.pi, 0.5 * np.pi, n_theta + 1)  # a half turn: y-symmetric
     weights = _boole_weights(n_theta)
     drags = []
     for theta in thetas:
-        lo, hi = _extent(cfg, beta, theta)
+        lo, hi = _extent(cfg, beta, theta, fusard_fit)
         offsets = np.linspace(lo, hi, n_x)
         area = np.zeros(n_x)
         for comp in cfg:
@@ -184,7 +235,8 @@ def harris_far_field(cfg, mach, n_x, n_theta, wing_points=64, n_grid=300):
                     pod = comp.mirrored or comp.origin[1] != 0.0
                     tube = pod and comp.radius[0] > 0.0
                     held = comp.radius[-1] > 0.0 and not tube
-                    area += _body_cut(comp, m, beta, theta, offsets, n_grid, held, tube)
+                    fit = fusard_fit and not comp.name.startswith("pod")
+                    area += _body_cut(comp, m, beta, theta, offsets, n_grid, held, tube, fit)
                 else:
                     raise NotImplementedError("arbitrary bodies are not in the reference")
         drags.append(least_drag(offsets, area))

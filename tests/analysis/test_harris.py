@@ -3,6 +3,7 @@ Harris program's conventions (tests/analysis/harris_reference.py), and each conv
 its own against an analytic or independent value."""
 
 import warnings
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -10,11 +11,11 @@ from scipy.interpolate import PchipInterpolator
 
 import juncture as jc
 from juncture.analysis import wavedrag
-from juncture.analysis.harris import HarrisConventions, buried_roots
+from juncture.analysis.harris import HarrisConventions, buried_roots, harris_model
 from juncture.analysis.wavedrag import roll_angles, sears_haack_drag
 from juncture.errors import JunctureError, JunctureWarning
 from juncture.model import CircularBody, Configuration, WingLike, rebuilt
-from tests.analysis.harris_reference import _boole_weights, harris_far_field
+from tests.analysis.harris_reference import _boole_weights, harris_far_field, least_drag_curve
 from tests.deckgen import deck_from_seed, read_text
 from tests.support import EXAMPLE_DECK
 
@@ -107,7 +108,10 @@ def test_summed_components_count_the_buried_root_twice_and_say_so():
     assert np.abs(extra[(x < 17.9) | (x > 22.1)]).max() < 1e-9
     with warnings.catch_warnings():
         warnings.simplefilter("error", JunctureWarning)  # a wing outside the body: no warning
-        wavedrag(_wing_in_cylinder(root_y=2.5), 1.6, 41, 4, method="harris")
+        # (the cylinder's radii as given: a least-drag area curve through its four
+        # stations bulges past the root at y = 2.5)
+        wavedrag(_wing_in_cylinder(root_y=2.5), 1.6, 41, 4, method="harris",
+                 conventions=replace(H(), fusard_fit=False))
 
 
 def test_normal_mach_alone_is_the_far_field_at_1_000001():
@@ -145,6 +149,52 @@ def test_half_turn_alone_averages_ntheta_plus_one_angles_with_boole():
                                              rel=1e-12)
     thetas, _ = roll_angles(16, False)
     np.testing.assert_allclose(full["thetas"], thetas)
+
+
+def _two_segment_fuselage():
+    """A FUSARD-like fuselage: a nose segment, then (after a gap) one with an open base."""
+    x1, a1 = np.array([0.0, 3.0, 8.0, 15.0, 20.0]), np.array([0.0, 2.0, 5.0, 7.0, 7.5])
+    x2, a2 = np.array([22.0, 30.0, 38.0, 40.0]), np.array([7.5, 7.0, 4.0, 2.0])
+    body = CircularBody("body", np.r_[x1, x2], np.sqrt(np.r_[a1, a2] / np.pi),
+                        camber=np.linspace(0.0, 0.4, 9), segments=(5, 4))
+    return body, (x1, a1), (x2, a2)
+
+
+def test_fusard_fit_alone_is_each_segments_least_drag_curve():
+    body, *segments = _two_segment_fuselage()
+    cfg = Configuration({"body": body})
+    on = wavedrag(cfg, None, 401, method="harris", conventions=H.only("fusard_fit"))
+    off = wavedrag(cfg, None, 401, method="harris", conventions=H.juncture())
+    x, area = np.asarray(on["x"]), np.asarray(on["area"])
+    for xs, areas in segments:  # an independent finite series (3000 modes, numpy)
+        inner = (x > xs[0]) & (x < xs[-1])
+        expected = np.maximum(least_drag_curve(xs, areas, x[inner]), 0.0)
+        np.testing.assert_allclose(area[inner], expected, rtol=0, atol=3e-5 * 7.5)
+    gap = (x > 20.0) & (x < 22.0)  # the straight bridge: radius linear
+    r = np.interp(x[gap], [20.0, 22.0], np.sqrt([7.5 / np.pi, 7.5 / np.pi]))
+    np.testing.assert_allclose(area[gap], np.pi * r * r, rtol=1e-9)
+    assert np.abs(area - np.asarray(off["area"])).max() > 1e-2  # PCHIP radius otherwise
+    fitted = harris_model(cfg, H.only("fusard_fit"))["body"]
+    given = np.r_[segments[0][0][:-1], segments[1][0]]  # the joint's later station holds
+    np.testing.assert_allclose(np.pi * fitted.radius_at(given) ** 2,
+                               np.r_[segments[0][1][:-1], segments[1][1]], rtol=1e-12)
+    np.testing.assert_allclose(fitted.center_at(given)[:, 1],
+                               np.r_[np.linspace(0.0, 0.4, 9)[:4], np.linspace(0.0, 0.4, 9)[5:]],
+                               atol=1e-12)
+    assert fitted.segments == (65, 49) and fitted.points_per_section == body.points_per_section
+
+
+def test_fusard_fit_leaves_pods_alone_and_matches_the_reference_far_field():
+    body, *_ = _two_segment_fuselage()
+    pod = CircularBody("pod 1", [0.0, 2.0, 6.0], [0.0, 0.5, 0.3], origin=[10.0, 3.0, -1.0],
+                       mirrored=True)
+    cfg = Configuration({"body": body, "pod 1": pod})
+    assert harris_model(cfg, H())["pod 1"] is pod
+    for fit in (True, False):
+        conv = replace(H(), fusard_fit=fit)
+        ours = wavedrag(cfg, 1.6, 41, 8, method="harris", conventions=conv)["D_over_q"]
+        ref, _ = harris_far_field(cfg, 1.6, 41, 8, n_grid=200, fusard_fit=fit)
+        assert ours == pytest.approx(ref, rel=0.01)
 
 
 def test_harris_mode_refuses_completed_geometry_and_unknown_names():

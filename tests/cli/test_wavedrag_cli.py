@@ -172,10 +172,10 @@ def test_harris_mode_and_its_switches(capsys):
     assert out["D_over_q"] == pytest.approx(expected, rel=1e-12)
     assert cap.err.count("root section lies inside") == 5  # wing, 3 fins, tail: once each
     assert main(["wavedrag", str(EXAMPLE_DECK), "--harris", "--harris-off", "sum-components",
-                 "linear-chordwise", "--mach", "1.6", "--json", "--n-x", "41",
+                 "linear-chordwise", "fusard-fit", "--mach", "1.6", "--json", "--n-x", "41",
                  "--n-theta", "8"]) == 0
     off = json.loads(capsys.readouterr().out)
-    conv = HarrisConventions(linear_chordwise=False, sum_components=False)
+    conv = HarrisConventions(linear_chordwise=False, sum_components=False, fusard_fit=False)
     assert off["D_over_q"] == pytest.approx(
         wavedrag(cfg, 1.6, 41, 8, method="harris", conventions=conv)["D_over_q"], rel=1e-12)
     for argv, match in ((["--harris-off", "half-turn"], "--harris-off: needs --harris"),

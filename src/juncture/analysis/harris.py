@@ -21,13 +21,19 @@ each on or off:
 ``half_turn``
     ``NTHETA + 1`` roll angles over a half turn with Boole's rule (the program's symmetric
     half model), also for a configuration juncture would not call symmetric.
+``fusard_fit``
+    A circular fuselage given by its areas (the deck's FUSARD cards: every circular body but
+    the pods) has, within each segment, the least-wave-drag (Eminton-Lord) area curve through
+    its given areas between the stations, instead of juncture's PCHIP radius. The fit is the
+    segment's own: the minimum of ``sum n a_n^2`` over the segment's slope series, whose
+    curve starts at the segment's first area and passes through every later one (the
+    closed-form kernel of :func:`juncture.analysis.wavedrag.eminton_lord`); the radius is
+    ``sqrt(S / pi)`` (0 where the curve dips below 0). Our reading of the convention: no
+    text of the program's fuselage routine was at hand.
 
 Kept from juncture in both modes (they are the program's too): ``NX + 1`` cuts spanning each
 roll angle's own equivalent body, from the first plane that touches the configuration to the
 last; the area of an open base held behind it; the Eminton-Lord drag of each equivalent body.
-Not reproduced: the program's fit of FUSARD fuselage areas segment by segment (no
-description of it was at hand; juncture's circular fuselage interpolates the radius through
-the given areas within each segment, straight across gaps).
 """
 
 from __future__ import annotations
@@ -39,7 +45,13 @@ import numpy as np
 
 from ..errors import JunctureError, JunctureWarning
 
-__all__ = ["HarrisConventions", "harris_model", "harris_networks", "buried_roots"]
+__all__ = ["HarrisConventions", "harris_model", "harris_networks", "buried_roots",
+           "fusard_fitted", "segment_area_fit"]
+
+#: Samples per deck interval of the fitted fuselage (cosine-spaced in each interval, cubic
+#: Hermite radius between them with the curve's own slopes): on the bundled transport the
+#: body's area is within 1.2e-5 of the largest area of the least-drag curve (9e-5 with 8).
+PER_INTERVAL = 16
 
 
 @dataclass(frozen=True)
@@ -50,11 +62,12 @@ class HarrisConventions:
     sum_components: bool = True
     normal_mach: float | None = 1.000001
     half_turn: bool = True
+    fusard_fit: bool = True
 
     @classmethod
     def juncture(cls):
         """None of them: juncture's own conventions."""
-        return cls(False, False, None, False)
+        return cls(False, False, None, False, False)
 
     @classmethod
     def only(cls, name, value=None):
@@ -73,16 +86,96 @@ class HarrisConventions:
 
 
 def harris_model(cfg, conventions):
-    """``cfg`` with straight lines between chordwise ordinates, if the conventions say so."""
-    if not conventions.linear_chordwise:
-        return cfg
-    from ..model import WingLike, rebuilt
+    """``cfg`` with straight lines between chordwise ordinates and the fuselage's areas fitted
+    segment by segment, as far as the conventions say so."""
+    from ..model import CircularBody, WingLike, rebuilt
 
     comps = dict(cfg.components)
     for name, comp in comps.items():
-        if isinstance(comp, WingLike) and comp.chordwise != "linear":
+        if (conventions.linear_chordwise and isinstance(comp, WingLike)
+                and comp.chordwise != "linear"):
             comps[name] = rebuilt(comp, chordwise="linear")
+        elif (conventions.fusard_fit and isinstance(comp, CircularBody)
+              and not name.startswith("pod")):
+            comps[name] = fusard_fitted(comp)
     return cfg.replace(components=comps)
+
+
+def segment_area_fit(x, area):
+    """``S(xq)``: the least-wave-drag area curve through one segment's station areas.
+
+    Parameters
+    ----------
+    x : (m,) float
+        The segment's stations, strictly increasing [deck length].
+    area : (m,) float
+        Their areas; the first need not be 0 [deck length^2].
+
+    Returns
+    -------
+    callable
+        ``S(xq, derivative=0) -> (...) float``: ``area[0]`` plus the Eminton-Lord curve
+        through ``area - area[0]`` (``area[-1]`` behind the segment), or its slope ``dS/dx``.
+    """
+    from .wavedrag import exact_fit
+
+    x, area = np.asarray(x, float), np.asarray(area, float)
+    x0, length = float(x[0]), float(x[-1] - x[0])
+    theta = np.arccos(np.clip(1.0 - 2.0 * (x[1:] - x0) / length, -1.0, 1.0))
+    theta[-1] = np.pi
+    fit = exact_fit(theta, 4.0 * (area[1:] - area[0]) / length, x0, length)
+    return lambda xq, derivative=0: fit.slope(xq) if derivative else area[0] + fit.area(xq)
+
+
+def _samples(xs, per_interval):
+    """A segment's stations plus ``per_interval - 1`` cosine-spaced points in each interval
+    (closer at the stations, where the least-drag curve's S'' has a logarithmic singularity);
+    and the given stations' indices."""
+    t = 0.5 * (1.0 - np.cos(np.pi * np.arange(per_interval) / per_interval))
+    xd = np.append((xs[:-1, None] + np.diff(xs)[:, None] * t).ravel(), xs[-1])
+    return xd, np.arange(0, xd.size, per_interval)
+
+
+def fusard_fitted(body, per_interval=PER_INTERVAL):
+    """``body`` sampled ``per_interval`` times per interval on each segment's least-drag
+    area curve (:func:`segment_area_fit`); its given stations keep their areas and camber."""
+    from ..model import rebuilt
+
+    xg = body.x_global
+    xs_out, r_out, c_out, slopes, sizes, start = [], [], [], [], [], 0
+    for count in body.segments:
+        part = slice(start, start + count)
+        start += count
+        xs, rs, cs = xg[part], body.radius[part], body.camber[part]
+        xd, given = _samples(xs, per_interval)
+        fit = segment_area_fit(xs, np.pi * rs * rs)
+        area = fit(xd)
+        area[given] = np.pi * rs * rs
+        radius = np.sqrt(np.maximum(area, 0.0) / np.pi)
+        camber = body.center_at(xd)[:, 1] - body.origin[2]  # interior points: own segment
+        camber[given] = cs
+        xs_out.append(xd - body.origin[0])
+        r_out.append(radius)
+        c_out.append(camber)
+        slopes.append(_slopes(body, xd, radius, fit(xd, 1)))
+        sizes.append(xd.size)
+    return rebuilt(body, x=np.concatenate(xs_out), radius=np.concatenate(r_out),
+                   camber=np.concatenate(c_out), segments=tuple(sizes),
+                   slopes=np.concatenate(slopes))
+
+
+def _slopes(body, xd, radius, area_slope):
+    """(n, 2): dr/dx = S' / (2 pi r) (where r = 0, a pointed end with an infinite dr/dx, the
+    chord slope to the next sample) and the camber's own slope, at one segment's samples."""
+    dr = np.divide(area_slope, 2.0 * np.pi * radius, out=np.zeros_like(radius),
+                   where=radius > 0.0)
+    for k in np.flatnonzero(radius <= 0.0):
+        j = k + 1 if k + 1 < xd.size else k - 1
+        dr[k] = (radius[j] - radius[k]) / (xd[j] - xd[k])
+    xq = xd.copy()  # the segment's own side at its ends (a joint belongs to the next one)
+    nudge = 1e-9 * (xd[-1] - xd[0])
+    xq[0], xq[-1] = xd[0] + nudge, xd[-1] - nudge
+    return np.stack([dr, body.center_at(xq, derivative=1)[:, 1]], axis=1)
 
 
 def buried_roots(cfg):

@@ -427,6 +427,14 @@ def eminton_lord(x, area, n_modes=None):
         return WaveDragResult(d_over_q=_drag(a), coefficients=a, n_modes=n_modes,
                               method="eminton-lord", x_nose=x_nose, length=length,
                               condition=cond, residual=0.25 * length * resid)
+    return exact_fit(theta, rhs, x_nose, length)
+
+
+def exact_fit(theta, rhs, x_nose, length):
+    """The infinite-series Eminton-Lord fit through ``g a = rhs`` at station angles ``theta``
+    (``theta[-1] = pi``, the base), from the closed-form kernel: :func:`eminton_lord` without
+    its checks on the areas (a body segment's areas less its first may be negative)."""
+    m = theta.size
     gram = area_kernel(theta[:, None], theta[None, :])
     gram = 0.5 * (gram + gram.T)
     lam, cond, dropped = _solve_gram(gram, rhs)

@@ -97,7 +97,8 @@ def _mach(text):
 
 
 #: the Harris program's conventions, as --harris-off names them
-HARRIS_CONVENTIONS = ("linear-chordwise", "sum-components", "normal-mach", "half-turn")
+HARRIS_CONVENTIONS = ("linear-chordwise", "sum-components", "normal-mach", "half-turn",
+                      "fusard-fit")
 
 
 def _common():
@@ -219,7 +220,8 @@ def build_parser(version):
     s.add_argument("--harris", action="store_true",
                    help="the Harris program's conventions: straight lines between chordwise "
                    "ordinates, component areas summed (no union), normal area as M = "
-                   "1.000001, NTHETA + 1 angles over a half turn with Boole's rule")
+                   "1.000001, NTHETA + 1 angles over a half turn with Boole's rule, the "
+                   "fuselage's areas fitted by least-drag curves segment by segment")
     s.add_argument("--harris-off", nargs="+", default=(), metavar="CONVENTION",
                    choices=HARRIS_CONVENTIONS,
                    help="with --harris, leave these conventions out: "
