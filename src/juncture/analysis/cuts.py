@@ -152,14 +152,6 @@ class _Mesh:
         """(3, n) ``normal . p`` of every vertex."""
         return normal[0] * self.x + normal[1] * self.y + normal[2] * self.z
 
-    def joined(self, other):
-        """This mesh and ``other``'s triangles, summed about this mesh's ``yz0``."""
-        out = object.__new__(_Mesh)
-        for k in ("x", "y", "z"):
-            setattr(out, k, np.concatenate([getattr(self, k), getattr(other, k)], axis=1))
-        out.yz0 = self.yz0
-        return out
-
     def cut(self, d, offsets):
         """Signed projected areas of the planes ``d = offsets`` (``d`` from :meth:`heights`)."""
         order = np.argsort(offsets, kind="stable")
@@ -191,11 +183,11 @@ class _Mesh:
         return out
 
 
-def _prepare(networks):
+def _prepare(networks, yz0=None):
     tri = triangulate(networks)
     if tri.shape[0] == 0:
         raise GeometryError("the networks have no triangle of nonzero area")
-    return _Mesh(tri)
+    return _Mesh(tri, yz0)
 
 
 def _offsets(values, name):

@@ -64,19 +64,16 @@ def _mach_plane_cuts(obj, mach, n_x, thetas, networks=None):
     heights = [mesh.heights(nk) for nk in normals]
     ext = np.array([[h.min(), h.max()] for h in heights])
     offsets = np.linspace(ext[:, 0], ext[:, 1], n_x).T
-    cut, tail_heights = mesh, None
+    areas = np.stack([mesh.cut(h, offsets[k]) for k, h in enumerate(heights)])
     if model:
         beta = np.sqrt(mach * mach - 1.0)
         reach = float(np.max(np.hypot(mesh.y, mesh.z)))
         size = float(np.ptp(mesh.x)) or 1.0
         tails = held_base_solids(obj, float(ext[:, 1].max()) + beta * reach + 0.01 * size)
-        if tails:
-            tail_mesh = _prepare(tails)
-            cut = mesh.joined(tail_mesh)
-            tail_heights = [tail_mesh.heights(nk) for nk in normals]
-    areas = np.stack([cut.cut(h if tail_heights is None else
-                              np.concatenate([h, tail_heights[k]], axis=1), offsets[k])
-                      for k, h in enumerate(heights)])
+        if tails:  # cut on their own (areas add), summed about the same point
+            tail = _prepare(tails, mesh.yz0)
+            areas += np.stack([tail.cut(tail.heights(nk), offsets[k])
+                               for k, nk in enumerate(normals)])
     return offsets, areas, mesh
 
 
