@@ -199,9 +199,32 @@ def test_fillets_on_an_arbitrary_section_fuselage(fillet, blocks):
             assert np.abs(body.signed_distance(geo.networks[name])).max() < 1e-9 * body.length
 
 
-def test_the_single_network_with_a_fillet_on_an_arbitrary_section_fuselage_is_refused():
-    with pytest.raises(jc.GeometryError, match="use blocks=4 or 6"):
-        jc.complete(squashed(example()), "cubic", single_network=True)
+@pytest.mark.parametrize("fillet", ["cubic", "circular"])
+@pytest.mark.parametrize("keep_area", [False, True])
+def test_the_single_network_with_a_fillet_on_an_arbitrary_section_fuselage(fillet, keep_area):
+    """Completed whole: the fuselage's n-lines are its cross-sections, each lower fillet line
+    starts at its upper line's x on the (re-designed) fuselage, circular lines lie in their
+    planes, no fillet point is inside the fuselage or the wing (an independent model of the
+    deck's wing, lofting lines extended inboard), and the seams close exactly."""
+    from tests.deckgen.references import WingLikeRef
+
+    cfg = squashed(example())
+    geo = jc.complete(cfg, fillet, keep_area, single_network=True)
+    body, w = geo.configuration["body"], cfg["wing"]
+    ref = WingLikeRef("wing", w.le, w.chord, w.x_over_c, w.upper, w.lower, w.camber)
+    length = body.length
+    fu, fl = geo.fillets["fillet upper"], geo.fillets["fillet lower"]
+    np.testing.assert_array_equal(fl[:, 0, 0], fu[:, 0, 0])
+    assert set(fu[:, 0, 0]) <= set(geo.networks["body"][:, 0, 0])
+    assert np.ptp(geo.networks["body"][..., 0], axis=1).max() == 0.0
+    if fillet == "circular":
+        assert np.all(fl[..., 0] == fl[:, :1, 0]) and np.all(fu[..., 0] == fu[:, :1, 0])
+    lines = np.concatenate([fu, fl])
+    assert np.isfinite(lines).all()
+    assert np.abs(body.signed_distance(lines[:, 0])).max() < 1e-9 * length
+    assert body.signed_distance(lines.reshape(-1, 3)).min() > -1e-9 * length
+    assert ref.depth(lines.reshape(-1, 3), extend_root=True).max() <= 1e-9 * length
+    assert max(seam_gaps(geo)) <= 1e-12 * length
 
 
 @pytest.mark.parametrize("fillet", ["cubic", "circular"])
@@ -249,9 +272,9 @@ def test_the_public_complete_is_the_function_whatever_was_imported_first():
 
 @pytest.mark.parametrize("fillet", ["cubic", "circular"])
 def test_single_network_lines_on_an_arbitrary_section_fuselage(fillet):
-    """What complete() refuses for now (above) is built underneath: on the squashed
-    transport the re-interpolated lines start at the upper x on the fuselage, circular arcs
-    lie in their planes x = X, and no point is inside the fuselage."""
+    """Underneath complete() (above): on the squashed transport the re-interpolated lines
+    start at the upper x on the fuselage, circular arcs lie in their planes x = X, and no
+    point is inside the fuselage."""
     from juncture.fillet import circular_fillet, cubic_fillet
     from juncture.intersect import intersect_body_both
     from juncture.single_network import reinterpolated

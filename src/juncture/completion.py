@@ -368,14 +368,6 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
         fields.update(kwargs)
         opts = CompleteOptions(**fields)
     check_combination(fillet, keep_area, opts)
-    if opts.single_network and fillet is not None and not isinstance(cfg[opts.body],
-                                                                     CircularBody):
-        # Built (single_network.py handles polyline sections), but generated decks still
-        # show re-interpolated fillet points inside the wing or the body near the edges.
-        raise GeometryError("the single fuselage network with a fillet is not yet reliable "
-                            "on arbitrary sections (re-interpolated lines can dip into the "
-                            "wing or the body near the edges): use blocks=4 or 6 (--blocks)",
-                            opts.body)
     if opts.refine > 1:
         cfg = _refined(cfg, opts.refine)
     wing = _pick(cfg, opts.wing, "wing")

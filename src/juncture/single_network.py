@@ -234,7 +234,17 @@ def interpolated_lines(wing, body, lines, ends, X):
            f"(x = {B[j, 0]:.6g}): no fillet start lies at x = {X[j]:.6g}"
            for j in np.flatnonzero(~ok)]
     ended = _ended(body, lines)
-    sharp = ok & (ended[sb] | ended[sb + 1])
+    # A start on the body that the wing covers (bracketing lines on either side of a
+    # leading edge, where the starts jump round it): no room for a fillet there either.
+    from .fillet.clearance import tolerance, wing_depth
+
+    tol = tolerance(body)
+    covered = ok & (np.abs(_radial(body, out[:, 0])) <= tol) & (
+        wing_depth(wing, out[:, :1])[:, 0] > tol)
+    for j in np.flatnonzero(covered):
+        log.append(f"single network: {lines.side} fillet line {j + 1} at x = {X[j]:.6g} "
+                   "would start inside the wing; left sharp")
+    sharp = ok & (ended[sb] | ended[sb + 1] | covered)
     if sharp.any():
         p_sharp, th_sharp, _, more = line_end_at(wing, body, ends, X, lines.side)
         out[sharp] = p_sharp[sharp, None, :]
@@ -363,8 +373,15 @@ def line_end_at(wing, body, ends, X, side="lower"):
                        "where the lofting lines stop meeting the body")
     for j in np.flatnonzero(~ok):
         log.append(f"single network: no {side} line end lies at x = {X[j]:.6g}; the "
-                   f"nearest one (x = {pts_e[near[j], 0]:.6g}) is used")
-    out[ok, 0] = X[ok]
+                   f"nearest one (x = {pts_e[near[j], 0]:.6g}) is used, moved to that x")
+    out[:, 0] = X
+    # The nearest end moved to x = X: a point on the body stays on it (its foot in that
+    # plane), no longer on the wing.
+    moved = ~ok & on_body
+    if moved.any():
+        out[moved] = _onto_body(body, out[moved], every=True)
+        theta[moved] = _body_angle(body, out[moved])
+        on_body[moved] = False
     return out, theta, on_body, log
 
 
@@ -479,12 +496,13 @@ def _onto_wing(wing, side, pts):
     return p.reshape(shape + (3,))
 
 
-def _onto_body(body, pts):
-    """Points (..., 3) inside the body moved onto its surface in their plane x = const
-    (radially on a circular body, to the nearest point of an arbitrary section)."""
+def _onto_body(body, pts, every=False):
+    """Points (..., 3) inside the body (``every``: all of them) moved onto its surface in
+    their plane x = const (radially on a circular body, to the nearest point of an arbitrary
+    section)."""
     shape = pts.shape[:-1]
     p = pts.reshape(-1, 3).copy()
-    inside = _radial(body, p) < 0
+    inside = np.ones(len(p), bool) if every else _radial(body, p) < 0
     if inside.any():
         q = p[inside]
         if hasattr(body, "section_at"):
