@@ -235,15 +235,19 @@ def interpolated_lines(wing, body, lines, ends, X):
            for j in np.flatnonzero(~ok)]
     ended = _ended(body, lines)
     # A start on the body that the wing covers (bracketing lines on either side of a
-    # leading edge, where the starts jump round it): no room for a fillet there either.
+    # leading edge, where the starts jump round it), or an end on the wing inside the body
+    # (between two ends on either side of a bend of the intersection): no room for a fillet.
     from .fillet.clearance import tolerance, wing_depth
 
     tol = tolerance(body)
     covered = ok & (np.abs(_radial(body, out[:, 0])) <= tol) & (
         wing_depth(wing, out[:, :1])[:, 0] > tol)
-    for j in np.flatnonzero(covered):
+    buried = ok & ~covered & (_radial(body, out[:, -1]) < -tol)
+    for j in np.flatnonzero(covered | buried):
         log.append(f"single network: {lines.side} fillet line {j + 1} at x = {X[j]:.6g} "
-                   "would start inside the wing; left sharp")
+                   f"would {'start inside the wing' if covered[j] else 'end inside the body'}"
+                   "; left sharp")
+    covered |= buried
     sharp = ok & (ended[sb] | ended[sb + 1] | covered)
     if sharp.any():
         p_sharp, th_sharp, _, more = line_end_at(wing, body, ends, X, lines.side)
