@@ -67,6 +67,32 @@ def test_keep_area_on_the_example():
     assert s["area_fillet"][1:-1].min() > 0
 
 
+def test_keep_area_short_of_its_tolerance_keeps_its_best_iterate_or_says_how_far(monkeypatch):
+    """An iteration that cannot reach the tolerance (1e-17, below the fillets' own
+    precision) returns its best iterate with a warning naming the residual once that is
+    1e-6 or less; one stopped far from it (a single iteration) raises ConvergenceError."""
+    import juncture.completion as completion
+
+    real = completion._keep_area
+
+    def capped(n):
+        return lambda *a, **kw: real(*a, **{**kw, "max_iterations": n})
+
+    monkeypatch.setattr(completion, "_keep_area", capped(6))
+    with pytest.warns(jc.JunctureWarning, match=r"area compensation stopped at a residual "
+                                                 r"of .* not 1e-17, after 6 iterations"):
+        geo = jc.complete(example(), "cubic", True, tolerance=1e-17)
+    res = np.asarray(geo.stations["residual"])
+    assert 0.0 < res.max() <= 1e-6  # measured independently of the iteration's own best:
+    body, body0 = geo.configuration["body"], example()["body"]
+    x = np.asarray(geo.stations["x"])
+    total = np.pi * body.radius_at(x) ** 2 + np.asarray(geo.stations["area_fillet"])
+    np.testing.assert_allclose(total, np.pi * body0.radius_at(x) ** 2, rtol=1e-6)
+    monkeypatch.setattr(completion, "_keep_area", capped(1))
+    with pytest.raises(jc.ConvergenceError, match="did not reach 1e-17 in 1 iterations"):
+        jc.complete(example(), "cubic", True, tolerance=1e-17)
+
+
 def test_single_network_fuselage():
     geo = jc.complete(example(), "cubic", single_network=True)
     body = geo.networks["body"]

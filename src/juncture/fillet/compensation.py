@@ -8,12 +8,13 @@ radius reductions under its two fillet lines.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
-from ..errors import ConvergenceError, GeometryError
+from ..errors import ConvergenceError, GeometryError, JunctureWarning
 from .area import fillet_added_area
 from .redesign import _radius_of
 from .section_redesign import reduction_for
@@ -62,6 +63,13 @@ class Compensation:
     iterations: np.ndarray
     n_iterations: int
     fillets: tuple
+
+
+#: Largest relative residual of an iteration that stops short of the tolerance that is
+#: still returned (its best iterate, with a warning) instead of raising.
+_ACCEPT = 1e-6
+#: Substitutions in a row (the Newton model failing) after which the nodes are re-set.
+_RENODE_AFTER = 5
 
 
 def _structured_newton(history, c_upper, w_upper, w_lower):
@@ -195,7 +203,9 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
     GeometryError
         An unknown ``compensate``; the fillets need more area than the body has.
     ConvergenceError
-        The residual does not reach ``tolerance`` in ``max_iterations``.
+        The residual does not reach ``tolerance`` in ``max_iterations``, and the best
+        iterate's is above 1e-6 (at or below it, that iterate is returned with a
+        :class:`JunctureWarning`).
 
     Notes
     -----
@@ -228,6 +238,8 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
     history = []
     previous, warm = None, False
     reduction = t = None
+    stalled = 0  # Newton models that failed in a row
+    best = None  # the iterate of least worst residual
     x = None  # the stations of the last iterate
     for it in range(1, max_iterations + 1):
         parts = initial if (it == 1 and initial is not None) else \
@@ -257,9 +269,12 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         met = residual <= tolerance
         first_met = np.where(met, it, 0) if first_met is None else \
             np.where((first_met == 0) & met, it, first_met)
+        result = (current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi), r_now, residual,
+                  first_met, it, parts)
         if met.all():
-            return Compensation(current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi), r_now,
-                                residual, first_met, it, parts)
+            return Compensation(*result)
+        if best is None or residual.max() < best[8].max():
+            best = result
         # The unknown: the area t given up for the fillets (and, without an exposure model,
         # for the uncovered root too) at fixed nodes, the first iteration's stations. The
         # stations move a little as the body shrinks (the lofting lines meet it further
@@ -269,8 +284,12 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         given = a0 - a_b - covered * (r_orig - r_now)
         x_low = parts[3].points[:, 0, 0]
         sample = (r_orig - r_now, radius(x_low) - _radius_of(current)(x_low), g)
-        if reduction is None:
+        if reduction is None or stalled >= _RENODE_AFTER:
+            # (Again, at the stations where they are now, when the Newton model has failed
+            # that many times in a row: the nodes lag behind stations that moved, where t
+            # barely changes the area and the substitution crawls.)
             reduction, t = reduction_for(body, x, exposure=exposure), given
+            history, stalled = [], 0
         f = g - given
         size = np.abs(f).max()
         if history and size > np.abs(history[-1][1]).max():
@@ -287,10 +306,19 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
             except GeometryError:
                 # A Newton step that asks more than the body has: the paper's substitution.
                 step, history = None, []
+        stalled = 0 if step is not None or len(history) < 2 else stalled + 1
         t = _feasible(reduction, t, f if step is None else step)
         current = reduction.body(t)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
         previous, warm = parts, bool(np.all(t >= 0))
+    worst = best[8].max()
+    where = f"{best[1][np.argmax(best[8])]:.6g}"
+    if worst <= _ACCEPT:
+        # Stuck just above the tolerance (the fillets' own precision, or an added area that
+        # jumps as the body moves): the best iterate, said once.
+        warnings.warn(f"{body.name}: area compensation stopped at a residual of {worst:.3g} "
+                      f"(x = {where}), not {tolerance:g}, after {max_iterations} iterations; "
+                      "the best iterate is kept", JunctureWarning, stacklevel=3)
+        return Compensation(*best)
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
-                           f"iterations (worst residual {residual.max():.3g} at x = "
-                           f"{x[np.argmax(residual)]:.6g})", body.name)
+                           f"iterations (worst residual {worst:.3g} at x = {where})", body.name)
