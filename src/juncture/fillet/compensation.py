@@ -321,4 +321,6 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
                       "the best iterate is kept", JunctureWarning, stacklevel=3)
         return Compensation(*best)
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
-                           f"iterations (worst residual {worst:.3g} at x = {where})", body.name)
+                           f"iterations (worst residual {worst:.3g} at x = {where}: the added "
+                           "area there jumps as the body shrinks; a smaller theta_u, e.g. 10 "
+                           "deg, usually settles it)", body.name)
