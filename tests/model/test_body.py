@@ -69,6 +69,26 @@ def test_signed_distance_of_a_sphere():
     np.testing.assert_allclose(b.signed_distance(pts), radii - R, atol=3e-4)
 
 
+def test_signed_distance_is_exact_on_a_strongly_curved_body():
+    """Points on the surface (radius from the body's own r(x)) are 0 to rounding, and points
+    off it along the meridian's normal at their distance (small enough not to reach round
+    another bend), where the 2001-sample polyline alone was off by the chords' sag."""
+    rng = np.random.default_rng(5)
+    x = np.linspace(0.0, 100.0, 12) + np.r_[0.0, rng.uniform(-2.0, 2.0, 10), 0.0]
+    b = CircularBody("body", x, np.r_[0.0, rng.uniform(3.0, 8.0, 10), 2.0])
+    xs = rng.uniform(5.0, 95.0, 4000)
+    th = rng.uniform(0.0, 2 * np.pi, xs.size)
+    r, r1, r2 = (b.radius_at(xs, k) for k in (0, 1, 2))
+    on = np.stack([xs, r * np.cos(th), r * np.sin(th)], -1)
+    assert np.abs(b.signed_distance(on)).max() <= 1e-12 * b.length
+    bend = np.abs(r2) / (1 + r1 * r1) ** 1.5  # meridian curvature
+    d = rng.uniform(-0.02, 0.02, xs.size) * (bend < 1.0)
+    nx, nr = -r1 / np.hypot(1, r1), 1 / np.hypot(1, r1)
+    xq, rq = xs + d * nx, r + d * nr
+    off = np.stack([xq, rq * np.cos(th), rq * np.sin(th)], -1)
+    np.testing.assert_allclose(b.signed_distance(off), d, rtol=0, atol=1e-9)
+
+
 def test_joint_station_may_repeat_between_segments_only():
     x = [0, 1, 2, 2, 3, 4]
     b = CircularBody("body", x, [0, 1, 1, 2, 2, 1], segments=(3, 3), axial="linear")

@@ -67,7 +67,7 @@ class Compensation:
 
 #: Largest relative residual of an iteration that stops short of the tolerance that is
 #: still returned (its best iterate, with a warning) instead of raising.
-_ACCEPT = 1e-6
+_ACCEPT = 1e-7
 #: Substitutions in a row (the Newton model failing) after which the nodes are re-set.
 _RENODE_AFTER = 5
 
@@ -204,7 +204,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         An unknown ``compensate``; the fillets need more area than the body has.
     ConvergenceError
         The residual does not reach ``tolerance`` in ``max_iterations``, and the best
-        iterate's is above 1e-6 (at or below it, that iterate is returned with a
+        iterate's is above 1e-7 (at or below it, that iterate is returned with a
         :class:`JunctureWarning`).
 
     Notes

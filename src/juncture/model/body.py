@@ -410,7 +410,10 @@ class CircularBody:
         revolution; for a cambered body the camber slope's effect is neglected, an error of
         second order in that slope). The meridian r(x) is sampled densely and at every
         station (where r' may jump: a joint, the ends of a straight bridge across a gap), and
-        the distance is that to the polyline through the samples.
+        the distance is that to the polyline through the samples, then taken to the curve
+        itself by Newton steps on the foot point from the nearest sample piece (a point on
+        the surface is 0 to rounding, where the polyline's chords alone would put it up to
+        their sag inside or out).
         """
         p = np.asarray(points, float)
         shape = p.shape[:-1]
@@ -427,13 +430,39 @@ class CircularBody:
         dx, dr = np.diff(mx), np.diff(mr)
         len2 = np.maximum(dx * dx + dr * dr, 1e-300)
         best = np.full(p.shape[0], np.inf)
+        piece, foot = np.zeros(p.shape[0], int), np.zeros(p.shape[0])
         for lo in range(0, p.shape[0], 2048):  # chunks bound memory, not a per-point loop
             px, pr = p[lo:lo + 2048, 0, None], rho[lo:lo + 2048, None]
             t = np.clip(((px - ax) * dx + (pr - ar) * dr) / len2, 0.0, 1.0)
             d2 = (px - ax - t * dx) ** 2 + (pr - ar - t * dr) ** 2
-            best[lo:lo + 2048] = np.sqrt(d2.min(axis=1))
+            k = d2.argmin(axis=1)
+            rows = np.arange(k.size)
+            best[lo:lo + 2048] = np.sqrt(d2[rows, k])
+            piece[lo:lo + 2048], foot[lo:lo + 2048] = k, ax[k] + t[rows, k] * dx[k]
+        on_curve = (piece > 0) & (piece < ax.size - 1)  # not the closures to the axis
+        if on_curve.any():
+            best[on_curve] = self._foot_distance(p[on_curve, 0], rho[on_curve],
+                                                 foot[on_curve], best[on_curve])
         inside = (p[:, 0] > x0) & (p[:, 0] < x1) & (rho < self.radius_at(p[:, 0]))
         return np.where(inside, -best, best).reshape(shape)
+
+    def _foot_distance(self, px, pr, xf, fallback, steps=6):
+        """Distance from meridian points (px, pr) to the curve r(x), by Newton steps on the
+        foot xf (minimising (x - px)^2 + (r(x) - pr)^2); ``fallback`` where they do not
+        settle (a kink of r at a joint station)."""
+        x0, x1 = self.x_global[0], self.x_global[-1]
+        for _ in range(steps):
+            r, r1, r2 = (self.radius_at(xf, k) for k in (0, 1, 2))
+            g = (xf - px) + (r - pr) * r1
+            gp = 1.0 + r1 * r1 + (r - pr) * r2
+            xf = np.clip(xf - g / np.where(gp > 0.0, gp, 1.0), x0, x1)
+        r, r1 = self.radius_at(xf), self.radius_at(xf, 1)
+        size = max(self.length, 1.0)
+        found = np.hypot(px - xf, pr - r)
+        # settled, and near the polyline's foot (not another local minimum far off)
+        good = (np.abs((xf - px) + (r - pr) * r1) <= 1e-9 * size) & (
+            found <= fallback + 1e-6 * size)
+        return np.where(good, found, fallback)
 
     def cross_sections(self, n_points=None, theta=None):
         """Body n-lines: (n_stations, n_points, 3) points at the input stations.
