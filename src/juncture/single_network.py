@@ -372,7 +372,10 @@ def line_end_at(wing, body, ends, X, side="lower"):
                                                   pts_e[seg[i]], pts_e[seg[i] + 1], X[i])
         out[i], on_body[i] = pt, body_pt
         theta[i] = np.where(body_pt, _body_angle(body, pt), theta[i])
-        for j in i[~on_curve]:
+        bridge = i[~on_curve]
+        if bridge.size:  # across the jump: kept out of the wing, then out of the body
+            out[bridge] = _onto_body(body, _onto_wing(wing, side, out[bridge]))
+        for j in bridge:
             log.append(f"single network: {side} line at x = {X[j]:.6g} bridges the jump "
                        "where the lofting lines stop meeting the body")
     for j in np.flatnonzero(~ok):
