@@ -184,6 +184,7 @@ def test_fusard_fit_alone_is_each_segments_least_drag_curve():
     assert fitted.segments == (65, 49) and fitted.points_per_section == body.points_per_section
 
 
+@pytest.mark.slow
 def test_fusard_fit_leaves_pods_alone_and_matches_the_reference_far_field():
     body, *_ = _two_segment_fuselage()
     pod = CircularBody("pod 1", [0.0, 2.0, 6.0], [0.0, 0.5, 0.3], origin=[10.0, 3.0, -1.0],
