@@ -18,7 +18,9 @@ on whole lines (the paper treats only the intersection points):
   paper's interpolated point lies only near them ("no longer collinear with the corresponding
   points on the first and second airfoil sections"). Where the end curve jumps over X_j (from
   the body to the plane of symmetry, where the lines stop meeting the body) the point is
-  interpolated across the jump, outside the body, and the log says so.
+  interpolated across the jump, then moved out of the wing and out of the body, and the log
+  says so. Where no line end lies at X_j at all, the nearest end is moved to that x and onto
+  the body.
 - **With a circular fillet** every line is rebuilt in the plane x = X_j: the arc of the
   neighbouring lines' radius tangent to the body circle and to the wing's section by that
   plane. Every segment of every fillet line lies in the cross-section plane of the
@@ -37,7 +39,9 @@ on whole lines (the paper treats only the intersection points):
   line, which runs aft; a line confined to the plane could not end on its lofting line, and
   where the lofting lines lie closer than a fillet's run in x the wing networks would fold.
   So the starts lie in the fuselage's cross-sections (no jump in x, as when only the first
-  point was moved), the rest of each line runs aft like the upper one.
+  point was moved), the rest of each line runs aft like the upper one. A line whose start the
+  wing would cover (the two lines lie on either side of a leading edge) or whose end would lie
+  inside the body is left sharp at X_j, as next to a line that misses.
 
 The wing networks keep their lofting lines outboard of the fillet (TM-4406 fig 4: the points
 of the first n-line are no longer on the lofting lines).
@@ -247,8 +251,7 @@ def interpolated_lines(wing, body, lines, ends, X):
         log.append(f"single network: {lines.side} fillet line {j + 1} at x = {X[j]:.6g} "
                    f"would {'start inside the wing' if covered[j] else 'end inside the body'}"
                    "; left sharp")
-    covered |= buried
-    sharp = ok & (ended[sb] | ended[sb + 1] | covered)
+    sharp = ok & (ended[sb] | ended[sb + 1] | covered | buried)
     if sharp.any():
         p_sharp, th_sharp, _, more = line_end_at(wing, body, ends, X, lines.side)
         out[sharp] = p_sharp[sharp, None, :]
