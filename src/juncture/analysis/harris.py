@@ -120,10 +120,7 @@ def segment_area_fit(x, area):
     from .wavedrag import exact_fit
 
     x, area = np.asarray(x, float), np.asarray(area, float)
-    x0, length = float(x[0]), float(x[-1] - x[0])
-    theta = np.arccos(np.clip(1.0 - 2.0 * (x[1:] - x0) / length, -1.0, 1.0))
-    theta[-1] = np.pi
-    fit = exact_fit(theta, 4.0 * (area[1:] - area[0]) / length, x0, length)
+    fit = exact_fit(x, area - area[0])
     return lambda xq, derivative=0: fit.slope(xq) if derivative else area[0] + fit.area(xq)
 
 

@@ -413,27 +413,36 @@ def eminton_lord(x, area, n_modes=None):
     1.0
     """
     x, area = _check_stations(x, area)
+    if n_modes is None:
+        return exact_fit(x, area)
     m = x.size - 1  # constrained stations
     x_nose, length = float(x[0]), float(x[-1] - x[0])
-    theta = _theta_of_x(x[1:], x_nose, length)
+    n_modes = int(n_modes)
+    if n_modes < m:
+        raise JunctureError(f"n_modes must be at least the number of stations after the "
+                            f"nose ({m}), found {n_modes}")
+    theta, rhs = _constraints(x, area)
+    a, cond, resid = _eminton_lord_modes(theta, rhs, n_modes)
+    return WaveDragResult(d_over_q=_drag(a), coefficients=a, n_modes=n_modes,
+                          method="eminton-lord", x_nose=x_nose, length=length,
+                          condition=cond, residual=0.25 * length * resid)
+
+
+def _constraints(x, area):
+    """Station angles (the base at pi) and right-hand sides ``g a = 4 S_i / l`` of the
+    stations after the nose."""
+    length = float(x[-1] - x[0])
+    theta = _theta_of_x(x[1:], float(x[0]), length)
     theta[-1] = np.pi
-    rhs = 4.0 * area[1:] / length  # S_i = (l/4) g a  ->  g a = 4 S_i / l
-    if n_modes is not None:
-        n_modes = int(n_modes)
-        if n_modes < m:
-            raise JunctureError(f"n_modes must be at least the number of stations after the "
-                                f"nose ({m}), found {n_modes}")
-        a, cond, resid = _eminton_lord_modes(theta, rhs, n_modes)
-        return WaveDragResult(d_over_q=_drag(a), coefficients=a, n_modes=n_modes,
-                              method="eminton-lord", x_nose=x_nose, length=length,
-                              condition=cond, residual=0.25 * length * resid)
-    return exact_fit(theta, rhs, x_nose, length)
+    return theta, 4.0 * area[1:] / length  # S_i = (l/4) g a
 
 
-def exact_fit(theta, rhs, x_nose, length):
-    """The infinite-series Eminton-Lord fit through ``g a = rhs`` at station angles ``theta``
-    (``theta[-1] = pi``, the base), from the closed-form kernel: :func:`eminton_lord` without
-    its checks on the areas (a body segment's areas less its first may be negative)."""
+def exact_fit(x, area):
+    """The infinite-series Eminton-Lord fit through station areas (``area[0]`` taken as 0),
+    from the closed-form kernel: :func:`eminton_lord` without its checks on the areas (a body
+    segment's areas less its first may be negative)."""
+    x_nose, length = float(x[0]), float(x[-1] - x[0])
+    theta, rhs = _constraints(x, area)
     m = theta.size
     gram = area_kernel(theta[:, None], theta[None, :])
     gram = 0.5 * (gram + gram.T)

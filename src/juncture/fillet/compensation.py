@@ -269,11 +269,11 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         met = residual <= tolerance
         first_met = np.where(met, it, 0) if first_met is None else \
             np.where((first_met == 0) & met, it, first_met)
-        result = (current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi), r_now, residual,
-                  first_met, it, parts)
+        result = Compensation(current, x, a0, a_f, only, a_b, np.sqrt(a0 / np.pi), r_now,
+                              residual, first_met, it, parts)
         if met.all():
-            return Compensation(*result)
-        if best is None or residual.max() < best[8].max():
+            return result
+        if best is None or residual.max() < best.residual.max():
             best = result
         # The unknown: the area t given up for the fillets (and, without an exposure model,
         # for the uncovered root too) at fixed nodes, the first iteration's stations. The
@@ -311,15 +311,15 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         current = reduction.body(t)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
         previous, warm = parts, bool(np.all(t >= 0))
-    worst = best[8].max()
-    where = f"{best[1][np.argmax(best[8])]:.6g}"
+    worst = best.residual.max()
+    where = f"{best.x[np.argmax(best.residual)]:.6g}"
     if worst <= _ACCEPT:
         # Stuck just above the tolerance (the fillets' own precision, or an added area that
         # jumps as the body moves): the best iterate, said once.
         warnings.warn(f"{body.name}: area compensation stopped at a residual of {worst:.3g} "
                       f"(x = {where}), not {tolerance:g}, after {max_iterations} iterations; "
                       "the best iterate is kept", JunctureWarning, stacklevel=3)
-        return Compensation(*best)
+        return best
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
                            f"iterations (worst residual {worst:.3g} at x = {where}: the added "
                            "area there jumps as the body shrinks; a smaller theta_u, e.g. 10 "
