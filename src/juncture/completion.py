@@ -232,7 +232,8 @@ def _other_components(cfg, wing, body, opts, log, known=None):
             continue
         plane = "xz" if (cfg.symmetric and comp.mirrored) else None
         if comp.name in by_comp:
-            mine = trimmed_networks(comp, by_comp[comp.name], log)
+            mine = trimmed_networks(comp, by_comp[comp.name], log,
+                                    {c.name: c for c in work})
         elif comp.name in pylons:
             mine = {comp.name: nacelle_network(comp, pylons[comp.name],
                                                n_points=36 * opts.refine + 1)}

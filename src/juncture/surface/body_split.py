@@ -91,6 +91,8 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     xg = body.x_global if stations is None else np.asarray(stations, float)
     x_nose, x_end = float(body.x_global[0]), float(body.x_global[-1])
     bottom, top_value, side = body_range(body)
+    upper_regions, lower_regions = _shared_ends(upper_regions, lower_regions,
+                                                (bottom, top_value))
     xu = np.unique(np.concatenate([_kept(xg, upper_regions, top_value)]
                                   + [r.x for r in upper_regions] + [f.x for f in fins]))
     xl = np.unique(np.concatenate([_kept(xg, lower_regions, bottom)]
@@ -121,6 +123,47 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         _end_at_points(up[:, ::-1], xu, [fin], None)
     radial = radial_outward(body)
     return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
+
+
+def _shared_ends(uppers, lowers, fars):
+    """Upper and lower regions (the same components, in the same order) whose ends are
+    shared: where a region's upper and lower curves end at different points (a blunt
+    trailing edge, a fillet's two start lines), the side that ends first is extended to the
+    other side's end point, and likewise at the leading edge.
+
+    Between regions both blocks then follow one bounding curve from one point (else the
+    body between two curves from the two points belongs to neither block), and the body
+    between the two end points belongs to the block that was extended. Points off the body
+    (a lofting line that misses it: an angle at the top or bottom) are left alone.
+    """
+    if len(uppers) != len(lowers):
+        return uppers, lowers
+    up_out, lo_out = [], []
+    for up, lo in zip(uppers, lowers):
+        if up.points is None or lo.points is None or not up.x.size or not lo.x.size:
+            up_out.append(up)
+            lo_out.append(lo)
+            continue
+        for end in (0, -1):
+            on = [min(abs(r.theta[end] - f) for f in fars) > 1e-12 for r in (up, lo)]
+            if not all(on) or np.array_equal(up.points[end], lo.points[end]):
+                continue
+            first, other = (up, lo) if (up.x[end] < lo.x[end]) == (end == -1) else (lo, up)
+            if up.x[end] == lo.x[end]:
+                continue  # the same station: the row ends at one point only (left alone)
+            extended = _with_point(first, other, end)
+            up, lo = (extended, lo) if first is up else (up, extended)
+        up_out.append(up)
+        lo_out.append(lo)
+    return up_out, lo_out
+
+
+def _with_point(region, other, end):
+    """``region`` with ``other``'s first (end 0) or last (end -1) point added."""
+    pick = slice(0, 1) if end == 0 else slice(-1, None)
+    return Boundary(np.concatenate([region.x, other.x[pick]]),
+                    np.concatenate([region.theta, other.theta[pick]]), region.name,
+                    np.concatenate([region.points, other.points[pick]]))
 
 
 def _shared_stations(xu, xl, spans):

@@ -55,19 +55,38 @@ def _mean_u(inter, other=None):
     return float(np.mean(u)) if u.size else np.nan
 
 
-def _at_root(wing, inters, others):
+def _at_root(wing, inters, others, hosts=None):
     """For each line of ``inters``, whether it trims ``wing``'s root end.
 
-    One line: when its points are nearer the root than the tip. Several (a pylon between
-    its nacelle and the wing): the line nearest the root trims the root and the others the
-    tip, however near the root the wing's line lies.
+    One line: the end whose section lies inside the component met (``hosts``: name to
+    component, those with a ``signed_distance``), else the end its points are nearer. A
+    canard whose root is buried deep in a wide fuselage meets it nearer its tip, and still
+    loses its root. Several (a pylon between its nacelle and the wing): the line nearest the
+    root trims the root and the others the tip, however near the root the wing's line lies.
     """
     u = np.array([_mean_u(inter, others[i] if i < len(others) else None)
                   for i, inter in enumerate(inters)])
     u = np.where(np.isfinite(u), u, 0.0)
     if len(u) < 2:
-        return [bool(v < 0.5 * (wing.n_sections - 1)) for v in u]
+        out = []
+        for inter, v in zip(inters, u):
+            buried = _buried_end(wing, inter, hosts or {})
+            out.append(bool(v < 0.5 * (wing.n_sections - 1)) if buried is None else buried)
+        return out
     return [bool(i == int(np.argmin(u))) for i in range(len(u))]
+
+
+def _buried_end(wing, inter, hosts):
+    """True when more of the root section's mean line lies inside the component ``inter``
+    meets than of the tip section's, False for the reverse, None when it cannot tell (the
+    same share, or a component without a signed distance)."""
+    host = hosts.get(inter.name.split("/", 1)[1].rsplit(" ", 1)[0])
+    if host is None or not hasattr(host, "signed_distance"):
+        return None
+    mean = 0.5 * (wing.section_points("upper") + wing.section_points("lower"))
+    inside = host.signed_distance(mean[[0, -1]]) < 0.0
+    root, tip = inside.mean(axis=1)
+    return None if root == tip else bool(root > tip)
 
 
 def _end_line(wing, side, inter, at_root, log):
@@ -84,7 +103,7 @@ def _end_line(wing, side, inter, at_root, log):
     return pts, u
 
 
-def trimmed_networks(wing, side_inters, log):
+def trimmed_networks(wing, side_inters, log, hosts=None):
     """Networks of ``wing`` cut at its intersection lines.
 
     Parameters
@@ -94,6 +113,9 @@ def trimmed_networks(wing, side_inters, log):
     side_inters : dict of str to list of BodyIntersection
         For "upper" and "lower": the intersections of that surface with other components,
         one per touching pair, in the same order on both sides.
+    hosts : dict of str to component, optional
+        The components met, by name: the end of ``wing`` buried in one is the end its line
+        trims.
 
     Returns
     -------
@@ -105,7 +127,7 @@ def trimmed_networks(wing, side_inters, log):
         sec = wing.section_points(side)  # (n_sections, n_stations, 3)
         first, last = None, None
         lo, hi = -np.inf, np.inf
-        for inter, at_root in zip(inters, _at_root(wing, inters, others)):
+        for inter, at_root in zip(inters, _at_root(wing, inters, others, hosts)):
             pts, u = _end_line(wing, side, inter, at_root, log)
             if at_root:
                 first, lo = pts, max(lo, float(np.max(u)))

@@ -112,12 +112,16 @@ def split_seams(vertices, triangles, component, lens=LENS):
     per_edge = {}
     for v, (_, e, t_v) in best.items():
         per_edge.setdefault(e, []).append((t_v, v))
+    links = {}
+    for a, b in edges.tolist():
+        links.setdefault(a, set()).add(b)
+        links.setdefault(b, set()).add(a)
     replaced, used = [], set()
     for e, cand in per_edge.items():
         (a, b), t = edges[e].tolist(), int(owner[e])
         if t in used:
             continue
-        chain = [v for _, v in sorted(cand)]
+        chain = _on_path(a, b, [v for _, v in sorted(cand)], links)
         fan = _fan(triangles[t], a, b, chain)
         n0 = _normal(vertices, triangles[t])
         if all(_normal(vertices, f) @ n0 > 0.0 for f in fan):
@@ -134,6 +138,34 @@ def split_seams(vertices, triangles, component, lens=LENS):
     new = [np.asarray(f, dtype=triangles.dtype).reshape(-1, 3) for _, f in replaced]
     parent = np.concatenate([keep] + [np.full(len(f), r[0]) for r, f in replaced])
     return np.concatenate([triangles[keep]] + new), parent
+
+
+def _on_path(a, b, chain, links):
+    """The points of ``chain`` on a path of boundary edges from ``a`` to ``b`` through
+    ``chain`` alone (the other side of the seam), in path order; all of ``chain`` when no
+    such path exists.
+
+    A point in the lens that the other side's boundary does not lead through belongs to
+    another seam: the lower surface's trailing-edge point, a blunt trailing edge's
+    thickness below the upper surface's last root edge.
+    """
+    allowed = set(chain) | {b}
+    previous, frontier = {a: None}, [a]
+    while frontier and b not in previous:
+        nxt = []
+        for v in frontier:
+            for w in links.get(v, ()):
+                if w in allowed and w not in previous and not (v == a and w == b):
+                    previous[w] = v
+                    nxt.append(w)
+        frontier = nxt
+    if b not in previous:
+        return chain
+    path, v = [], previous[b]
+    while v != a:
+        path.append(v)
+        v = previous[v]
+    return path[::-1] or chain
 
 
 def _collapse(vertices, triangles, a, b, chain):
