@@ -147,10 +147,14 @@ def _candidate_pairs(v, tri):
     size = np.median(np.max(hi - lo, axis=1))
     size = size if size > 0 else 1.0
     origin = lo.min(axis=0)
-    c0 = np.floor((lo - origin) / size).astype(np.int64)
-    c1 = np.floor((hi - origin) / size).astype(np.int64)
-    span = c1 - c0 + 1
-    count = span.prod(axis=1)
+    while True:  # cells of the median triangle's size, larger while long ones fill too many
+        c0 = np.floor((lo - origin) / size).astype(np.int64)
+        c1 = np.floor((hi - origin) / size).astype(np.int64)
+        span = c1 - c0 + 1
+        count = span.prod(axis=1)
+        if count.sum() <= 8 * len(tri):
+            break
+        size *= 1.5
     owner = np.repeat(np.arange(len(tri)), count)
     offs = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
     sy, sz = span[owner, 1], span[owner, 2]
@@ -159,20 +163,17 @@ def _candidate_pairs(v, tri):
     key = (cell[:, 0] * dims[1] + cell[:, 1]) * dims[2] + cell[:, 2]
     order = np.lexsort((owner, key))
     key, owner = key[order], owner[order]
+    # Every pair within a cell, at once: element i of a cell pairs with the ones after it.
     starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
     ends = np.r_[starts[1:], key.size]
-    pairs = []
-    for s, e in zip(starts, ends):
-        if e - s > 1:
-            ids = owner[s:e]
-            i, j = np.triu_indices(ids.size, 1)
-            pairs.append(np.stack([ids[i], ids[j]], axis=1))
-    if not pairs:
-        return np.zeros((0, 2), np.int64)
-    pairs = np.unique(np.concatenate(pairs), axis=0)
-    a, b = pairs[:, 0], pairs[:, 1]
+    end_of = np.repeat(ends, ends - starts)
+    after = end_of - np.arange(key.size) - 1
+    left = np.repeat(np.arange(key.size), after)
+    step = np.arange(left.size) - np.repeat(np.cumsum(after) - after, after) + 1
+    a, b = owner[left], owner[left + step]
     overlap = np.all((lo[a] <= hi[b]) & (lo[b] <= hi[a]), axis=1)
-    return pairs[overlap]
+    code = np.unique(a[overlap] * np.int64(len(tri)) + b[overlap])
+    return np.stack([code // len(tri), code % len(tri)], axis=1)
 
 
 def self_intersections(vertices, triangles):
@@ -195,14 +196,15 @@ def self_intersections(vertices, triangles):
 
 
 def _opposite(t, mask):
-    """Per row, the vertex ids of t not flagged in mask (k, 3) -> list of arrays."""
-    return [t[i][~mask[i]] for i in range(len(t))]
+    """Per row, the vertex ids of t not flagged in mask (k, 3), in order: (k, m) for the m
+    unflagged per row (the same m in every row)."""
+    return t[~mask].reshape(len(t), -1)
 
 
 def _one_shared(v, ta, tb, shared):
     """Triangles sharing one vertex cross when the edge of one opposite it meets the other."""
-    oa = np.array(_opposite(ta, shared.any(axis=2)))  # (k, 2)
-    ob = np.array(_opposite(tb, shared.any(axis=1)))
+    oa = _opposite(ta, shared.any(axis=2))  # (k, 2)
+    ob = _opposite(tb, shared.any(axis=1))
     hit = segments_hit_triangles(v[oa[:, 0]], v[oa[:, 1]], v[tb[:, 0]], v[tb[:, 1]],
                                  v[tb[:, 2]])
     hit |= segments_hit_triangles(v[ob[:, 0]], v[ob[:, 1]], v[ta[:, 0]], v[ta[:, 1]],
@@ -212,9 +214,9 @@ def _one_shared(v, ta, tb, shared):
 
 def _folded(v, ta, tb, shared):
     """Neighbours across an edge fold onto each other: coplanar, on the same side of it."""
-    ea = np.array(_opposite(ta, ~shared.any(axis=2)))  # the shared edge, as in ta
-    a3 = np.array(_opposite(ta, shared.any(axis=2)))[:, 0]
-    b3 = np.array(_opposite(tb, shared.any(axis=1)))[:, 0]
+    ea = _opposite(ta, ~shared.any(axis=2))  # the shared edge, as in ta
+    a3 = _opposite(ta, shared.any(axis=2))[:, 0]
+    b3 = _opposite(tb, shared.any(axis=1))[:, 0]
     p, q = v[ea[:, 0]], v[ea[:, 1]]
     coplanar = orient3d(p, q, v[a3], v[b3]) == 0
     # same side of the edge within the plane: the two normals point the same way

@@ -29,31 +29,40 @@ _BOUND3 = (7.0 + 56.0 * _EPS) * _EPS
 _BOUND2 = (3.0 + 16.0 * _EPS) * _EPS
 
 
-def _integers(*points):
-    """The coordinates of ``points`` as Python integers over one power-of-two denominator
-    (floats are dyadic rationals, so this is exact; a sign computed from them is the sign
-    for the floats, and much faster than ``Fraction`` arithmetic)."""
-    ratios = [float(v).as_integer_ratio() for p in points for v in p]
-    den = max(q for _, q in ratios)
-    ints = [n * (den // q) for n, q in ratios]
-    k = len(points[0])
-    return [ints[i:i + k] for i in range(0, len(ints), k)]
+def _integers(points):
+    """Coordinates (k, n, dim) as Python integers (an object array) over one power-of-two
+    denominator per row k (floats are dyadic rationals, so this is exact; a sign computed
+    from them is the sign for the floats). Vectorised: the mantissas as int64 and one shift
+    per coordinate, in numpy's object loops rather than per-point Python code."""
+    mant, expo = np.frexp(points)
+    ints = (mant * 2.0 ** 53).astype(np.int64)
+    expo = np.where(ints == 0, np.iinfo(np.int32).max, expo.astype(np.int64))
+    low = expo.reshape(len(points), -1).min(axis=1)
+    low = np.where(low == np.iinfo(np.int32).max, 0, low)
+    shift = np.where(ints == 0, 0, expo - low[:, None, None])
+    return np.left_shift(ints.astype(object), shift.astype(object))
+
+
+def _sign(det):
+    return (det > 0).astype(np.int64) - (det < 0).astype(np.int64)
 
 
 def _exact3(a, b, c, d):
-    a, b, c, d = _integers(a, b, c, d)
-    ad = [a[i] - d[i] for i in range(3)]
-    bd = [b[i] - d[i] for i in range(3)]
-    cd = [c[i] - d[i] for i in range(3)]
-    det = (ad[0] * (bd[1] * cd[2] - bd[2] * cd[1]) + bd[0] * (cd[1] * ad[2] - cd[2] * ad[1])
-           + cd[0] * (ad[1] * bd[2] - ad[2] * bd[1]))
-    return (det > 0) - (det < 0)
+    """Exact signs of orient3d for rows of (k, 3) points."""
+    p = _integers(np.stack([a, b, c, d], axis=1))
+    ad, bd, cd = p[:, 0] - p[:, 3], p[:, 1] - p[:, 3], p[:, 2] - p[:, 3]
+    det = (ad[:, 0] * (bd[:, 1] * cd[:, 2] - bd[:, 2] * cd[:, 1])
+           + bd[:, 0] * (cd[:, 1] * ad[:, 2] - cd[:, 2] * ad[:, 1])
+           + cd[:, 0] * (ad[:, 1] * bd[:, 2] - ad[:, 2] * bd[:, 1]))
+    return _sign(det)
 
 
 def _exact2(a, b, c):
-    a, b, c = _integers(a, b, c)
-    det = (a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0])
-    return (det > 0) - (det < 0)
+    """Exact signs of orient2d for rows of (k, 2) points."""
+    p = _integers(np.stack([a, b, c], axis=1))
+    det = ((p[:, 0, 0] - p[:, 2, 0]) * (p[:, 1, 1] - p[:, 2, 1])
+           - (p[:, 0, 1] - p[:, 2, 1]) * (p[:, 1, 0] - p[:, 2, 0]))
+    return _sign(det)
 
 
 def orient3d(a, b, c, d):
@@ -69,7 +78,11 @@ def orient3d(a, b, c, d):
             + np.abs(cd[:, 0]) * (np.abs(ad[:, 1] * bd[:, 2]) + np.abs(ad[:, 2] * bd[:, 1])))
     bound = _BOUND3 * perm
     sign = np.where(det > bound, 1, np.where(-det > bound, -1, 0))
-    for i in np.flatnonzero(np.abs(det) <= bound):
+    # Four points with one coordinate equal (a cap in a plane x = const, the plane of
+    # symmetry): differences of equal floats are exactly 0, so is the determinant.
+    flat = np.any((ad == 0.0) & (bd == 0.0) & (cd == 0.0), axis=1)
+    i = np.flatnonzero((np.abs(det) <= bound) & ~flat)
+    if i.size:
         sign[i] = _exact3(a[i], b[i], c[i], d[i])
     return sign
 
@@ -82,7 +95,8 @@ def orient2d(a, b, c):
     det = det_l - det_r
     bound = _BOUND2 * (np.abs(det_l) + np.abs(det_r))
     sign = np.where(det > bound, 1, np.where(-det > bound, -1, 0))
-    for i in np.flatnonzero(np.abs(det) <= bound):
+    i = np.flatnonzero(np.abs(det) <= bound)
+    if i.size:
         sign[i] = _exact2(a[i], b[i], c[i])
     return sign
 
