@@ -24,7 +24,7 @@ from .fillet.area import fillet_added_area
 from .fillet.circular import circular_fillet
 from .fillet.compensation import keep_area as _keep_area
 from .fillet.cubic import FilletLines, cubic_fillet
-from .geometry import Geometry
+from .geometry import Geometry, mirror_points
 from .intersect import intersect_body_both
 from .misses import ended_lines, line_ends
 from .model import CircularBody, Configuration
@@ -259,19 +259,32 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
 
     ups = [Boundary(fu.start[:, 0], fu.theta_start, "wing", fu.start)]
     los = [Boundary(fl.start[:, 0], fl.theta_start, "wing", fl.start)]
-    fins = []
+    fins, port = [], []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
             ups.append(boundary_from_points(body, up.points, comp.name))
             los.append(boundary_from_points(body, lo.points, comp.name))
         elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
             fins.append(boundary_from_points(body, up.points, comp.name))
+            port.append(boundary_from_points(body, mirror_points(lo.points), comp.name))
     # The same point count per cross-section, split so the spacing is even at the wing's
     # leading-edge station (TM-4607): the shares follow the arcs below and above theta_w.
     b_lo, b_hi, _ = body_range(body)
     n_lower, n_upper = split_counts(float(fu.theta_start[0]), 2 * n_half - 1, b_lo, b_hi)
+    unsymmetric = any(not np.array_equal(f.points, g.points) for f, g in zip(fins, port))
+    if unsymmetric:  # both halves at every fin station, so they share the plane's points
+        base = body.x_global if stations is None else stations
+        stations = np.unique(np.concatenate([base] + [f.x for f in fins + port]))
     nets = split_body(body, ups, los, fins, n_upper=n_upper, n_lower=n_lower,
                       stations=stations)
+    if unsymmetric:
+        # A centre-line fin whose two sides differ (FINORD O and I): the fuselage's y < 0
+        # half starts at the inboard line, so it is made on its own, not mirrored.
+        left = split_body(body, ups, los, port, n_upper=n_upper, n_lower=n_lower,
+                          stations=stations)["body upper"]
+        nets["body upper image"] = mirror_points(left)[::-1]
+        log.append("a centre-line fin's sides differ: the fuselage's upper block is made for "
+                   "each half")
     six, _ = juncture_networks(wing, body, fu, fl, 6, n_half, stations)
     nets["wing upper"], nets["wing lower"] = six["wing upper"], six["wing lower"]
     seams = [{"a": "body upper", "b": "wing upper", "seam": "fillet start line",
@@ -463,7 +476,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                               "points": len(pts), "max_gap": gap})
     for s in seams:
         log.append(f"seam {s['a']} / {s['b']} ({s['seam']}): max gap {s['max_gap']:.3g}")
-    sym = {k: "xz" for k in nets}
+    sym = {k: "xz" for k in nets if f"{k} image" not in nets and not k.endswith(" image")}
     intersections = {f"{wing.name}/{body.name} upper": iu.points,
                      f"{wing.name}/{body.name} lower": lower_points}
     intersections.update(other_inters)

@@ -130,11 +130,16 @@ class Geometry:
         """The component a network (or its ``" image"``) belongs to: the longest component
         name of ``configuration`` that the network's name is or starts with (``"pod 1"`` for
         ``"pod 1"``, ``"fin 3"`` for ``"fin 3 outboard image"``), else the network's own
-        name without ``" image"``."""
+        name without ``" image"``; a juncture block of the four-block layout, which holds
+        the fuselage's arcs and the wing (``"wing-body upper"``), belongs to ``"wing-body"``
+        with its lower block."""
         base = name[:-len(" image")] if name.endswith(" image") else name
         names = sorted(getattr(self.configuration, "components", None) or (), key=len,
                        reverse=True)
-        return next((c for c in names if base == c or base.startswith(c + " ")), base)
+        found = next((c for c in names if base == c or base.startswith(c + " ")), None)
+        if found is None and base.startswith("wing-body "):
+            return "wing-body"
+        return base if found is None else found
 
     def extents(self):
         """(2, 3) array: minimum and maximum x, y, z over all networks (images excluded)."""

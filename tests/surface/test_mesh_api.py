@@ -101,7 +101,7 @@ def test_generated_airplanes_close(deck):
     """Airplanes juncture was not built on (tests/data/generated): closed, oriented, no
     crossing triangles, every intersection point a vertex, and the volume below the
     model's union of normal areas (overlaps counted once) by no more than the flat panels'
-    sag, never above it."""
+    sag, never above it (the re-triangulated surface's volume: test_remesh)."""
     cfg = jc.read(deck)
     geo = _complete_refined(cfg, 1)
     surface = jc.mesh(geo, min_angle=0)     # the assembly; test_remesh re-triangulates
@@ -111,10 +111,12 @@ def test_generated_airplanes_close(deck):
     for name, pts in geo.intersections.items():
         for p in np.asarray(pts)[np.all(np.isfinite(pts), axis=1)]:
             assert tuple((p + 0.0).tolist()) in verts, name
-    # The model kept with the geometry (roots outside the fuselage continued to it). The
-    # networks' flat panels join the deck's stations by straight lines: a pod given at four
-    # stations loses a third of its area near its nose between them (3 % of the airplane).
-    assert -0.035 < surface.volume() / _model_volume(geo.configuration) - 1.0 < 1e-3
+    # The model kept with the geometry (roots outside the fuselage continued to it). Never
+    # above it (no overlap counted twice); below it by the networks' flat panels, which
+    # follow the deck's resolution: a pod given at four stations loses a third of its area
+    # near its nose between them, a circular fuselage given five points per half-section
+    # (NRADX = 5) is an octagon, 10 % short.
+    assert -0.15 < surface.volume() / _model_volume(geo.configuration) - 1.0 < 1e-3
 
 
 @pytest.mark.parametrize("fillet", ["cubic", "circular"])

@@ -567,6 +567,7 @@ class ArbitraryBody:
     params: tuple = None
     _u: np.ndarray = None
     _a: np.ndarray = None
+    _b: np.ndarray = None
     _d: np.ndarray = None
     _count: np.ndarray = None
     _grid: np.ndarray = None
@@ -612,7 +613,7 @@ class ArbitraryBody:
         d.flags.writeable = False
         for field, value in (("x", x), ("sections", tuple(secs)), ("segments", seg),
                              ("mirrored", bool(self.mirrored)), ("params", params),
-                             ("_u", u), ("_a", a),
+                             ("_u", u), ("_a", a), ("_b", b),
                              ("_d", d), ("_count", count), ("_grid", grid),
                              ("_lipschitz", (float(1.0 + speed.max()),
                                              range_max_table(speed)))):
@@ -645,7 +646,13 @@ class ArbitraryBody:
         """(..., M, 2): the half-section polylines at stations xq, exact (padded to M points
         by repeating the top one: zero-length pieces that change no distance or area)."""
         k, w = self._pair(xq)
-        return self._a[k] + w[..., None, None] * self._d[k]
+        return self._blend(k, w[..., None, None])
+
+    def _blend(self, k, w, j=slice(None)):
+        """Matched points ``j`` of station pair ``k`` at blend fraction ``w`` (broadcast):
+        (1 - w) a + w b, which is each end section exactly at w = 0 and 1 (a + w (b - a) is
+        not: a pointed tail given as one point repeated came out an ulp apart)."""
+        return (1.0 - w) * self._a[k, j] + w * self._b[k, j]
 
     def point(self, x, s):
         """Surface point at station x and surface parameter s (0 bottom, 1 top). (..., 3).
@@ -661,8 +668,8 @@ class ArbitraryBody:
         u1 = np.take_along_axis(u, (j + 1)[..., None], -1)[..., 0]
         t = ((s - u0) / (u1 - u0))[..., None]
         w = w[..., None]
-        p0 = self._a[k, j] + w * self._d[k, j]
-        p1 = self._a[k, j + 1] + w * self._d[k, j + 1]
+        p0 = self._blend(k, w, j)
+        p1 = self._blend(k, w, j + 1)
         return np.concatenate([x[..., None], p0 + t * (p1 - p0)], axis=-1)
 
     def center_at(self, x):
@@ -670,7 +677,7 @@ class ArbitraryBody:
         the integral of z(s) ds from 0 to 1 (a reference centre for orientation; not a
         geometric centroid)."""
         k, w = self._pair(x)
-        z = self._a[k][..., 1] + w[..., None] * self._d[k][..., 1]
+        z = self._blend(k, w[..., None, None])[..., 1]
         zc = 0.5 * (np.diff(self._u[k], axis=-1) * (z[..., 1:] + z[..., :-1])).sum(-1)
         return np.stack([np.zeros_like(zc), zc], axis=-1)
 
@@ -682,7 +689,7 @@ class ArbitraryBody:
         clamped segment parameters ``t`` and squared distances ``dist2`` (q, M-1).
         """
         k, w = self._pair(p[:, 0])
-        sec = self._a[k] + w[:, None, None] * self._d[k]  # (q, M, 2)
+        sec = self._blend(k, w[:, None, None])  # (q, M, 2)
         a, d = sec[:, :-1], np.diff(sec, axis=1)
         q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
         len2 = np.maximum((d * d).sum(-1), 1e-300)

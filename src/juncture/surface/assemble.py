@@ -367,12 +367,16 @@ ON_PLANE = 1e-12
 
 def _on_plane(geometry, nets):
     """``nets`` with the points of mirrored networks that lie on their plane put on it
-    exactly, in the network and in its image, so that the two halves share them."""
+    exactly, in the network and in its image (mirrored or made on its own), so that the two
+    halves share them."""
     from ..geometry import _AXIS_OF_PLANE
 
     size = float(np.max(np.ptp(geometry.extents(), axis=0))) or 1.0
     out = dict(nets)
-    for name, plane in geometry.symmetry.items():
+    planes = dict(geometry.symmetry)
+    # a half made on its own (a centre-line fin with two different sides) and its network
+    planes.update({n: "xz" for n in nets if f"{n} image" in nets and n not in planes})
+    for name, plane in planes.items():
         axis = _AXIS_OF_PLANE[plane]
         for key in (name, f"{name} image"):
             net = np.array(out[key], float)

@@ -48,13 +48,22 @@ def _radial(triangles, unit):
 
 
 def _models(geometry, mesh, kind):
-    """{component index: model} of the mesh's components that are ``kind``."""
+    """{component index: [models]} of the mesh's components that are ``kind``; a juncture
+    block of the four-block layout ("wing-body upper", body arcs and wing in one network)
+    ("wing-body") gets every model of that kind (each move lifts only points whose flat triangle lies on
+    that model's surface)."""
     comps = getattr(geometry, "configuration", None)
     if comps is None:
         return {}
-    by_name = {c.name: c for c in comps}
-    return {k: by_name[name] for k, name in enumerate(mesh.components)
-            if isinstance(by_name.get(name), kind)}
+    mine = [c for c in comps if isinstance(c, kind)]
+    by_name = {c.name: c for c in mine}
+    out = {}
+    for k, name in enumerate(mesh.components):
+        if name in by_name:
+            out[k] = [by_name[name]]
+        elif name == "wing-body" and mine:
+            out[k] = mine
+    return out
 
 
 def surface_lift(geometry, mesh):
@@ -94,12 +103,13 @@ def _lifter(geometry, mesh, kind, move):
     tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
 
     def lift(points, corners, component, surface):
-        model = models.get(int(component))
         name = mesh.surfaces[int(surface)]
-        if model is None or not len(points) or name.endswith(" cap"):
+        points = np.asarray(points, float)
+        if not len(points) or name.endswith(" cap"):
             return points
-        return move(model, np.asarray(points, float), vertices[corners],
-                    name.endswith(" image"), tol)
+        for model in models.get(int(component), ()):
+            points = move(model, points, vertices[corners], name.endswith(" image"), tol)
+        return points
 
     return lift
 

@@ -143,7 +143,8 @@ def split_seams(vertices, triangles, component, lens=LENS):
 def _on_path(a, b, chain, links):
     """The points of ``chain`` on a path of boundary edges from ``a`` to ``b`` through
     ``chain`` alone (the other side of the seam), in path order; all of ``chain`` when no
-    such path exists.
+    such path exists (the other side's points between two of this side's: a point of this
+    side lies between them).
 
     A point in the lens that the other side's boundary does not lead through belongs to
     another seam: the lower surface's trailing-edge point, a blunt trailing edge's

@@ -1,0 +1,169 @@
+"""Survey: does ``juncture.mesh`` close generated airplanes (issue 12)?
+
+Draws N decks from ``tests.deckgen.decks()`` with a fixed hypothesis seed (the same decks as
+``tools/survey_decks.py`` for the same N and seed), completes each sharp and with a cubic
+fillet and ``keep_area``, and meshes it with the defaults. Every run is classified:
+
+- ``closed``: ``mesh`` returned a surface that passed every check; its enclosed volume is
+  compared with an independent integral of the model's union of normal areas A(x) (sharp
+  runs only: a fillet adds area the model does not have), and its triangle angles recorded;
+- ``kept``: closed, but the re-triangulation for quality was not kept (a warning);
+- ``complete``: ``complete`` refused the deck (issue 11's business, not the mesh's);
+- ``refused``: ``mesh`` refused the surface, by message class;
+- ``crash``: any other exception, by type and innermost juncture frame.
+
+Usage::
+
+    .venv/bin/python tools/survey_mesh.py --n 40 --seed 11 --save mesh-out
+"""
+
+from __future__ import annotations
+
+import argparse
+import collections
+import json
+import multiprocessing
+import os
+import signal
+import sys
+import time
+import traceback
+import warnings
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tools"))
+
+from survey_decks import crash_location, draw_decks, message_class  # noqa: E402
+
+TIMEOUT = 300
+OPTIONS = (("sharp", {}), ("cubic+keep_area", {"fillet": "cubic", "keep_area": True}))
+
+
+class _Timeout(Exception):
+    pass
+
+
+def _alarm(signum, frame):
+    raise _Timeout
+
+
+def union_volume(cfg, n=2001):
+    """The model's union of normal areas A(x), integrated by Simpson's rule (both halves)."""
+    import numpy as np
+    from scipy.integrate import simpson
+
+    from juncture.analysis.areas import normal_area_distribution
+
+    a = normal_area_distribution(cfg, n_x=n, flow_through=False)
+    return float(simpson(a["total"], x=a["x"])), np.asarray(a["x"])
+
+
+def survey_deck(job):
+    import numpy as np
+
+    import juncture as jc
+    from juncture.surface.quality import triangle_angles as angles
+    from tests.deckgen import read_text
+
+    index, text = job
+    out = []
+    try:
+        cfg = read_text(text)
+    except Exception as exc:
+        return [{"deck": index, "options": "read", "outcome": "crash", "cls": repr(exc)}]
+    for label, kwargs in OPTIONS:
+        rec = {"deck": index, "options": label}
+        signal.signal(signal.SIGALRM, _alarm)
+        signal.alarm(TIMEOUT)
+        try:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                try:
+                    geo = jc.complete(cfg, **kwargs)
+                except jc.JunctureError as exc:
+                    rec.update(outcome="complete", cls=message_class(exc))
+                    out.append(rec)
+                    continue
+                t0 = time.perf_counter()
+                surface = jc.mesh(geo)
+                rec["seconds"] = time.perf_counter() - t0
+            kept = [str(w.message) for w in caught if "re-triangulation" in str(w.message)]
+            rec["outcome"] = "kept" if kept else "closed"
+            if kept:
+                rec["cls"] = message_class(kept[0])[:120]
+            ang = angles(surface.vertices, surface.triangles)
+            rec["min_angle"] = float(ang.min())
+            rec["share20"] = float(np.mean(ang.min(axis=1) >= 20.0))
+            rec["triangles"] = int(len(surface.triangles))
+            if not kwargs:
+                ref, _ = union_volume(cfg)
+                rec["volume_error"] = surface.volume() / ref - 1.0
+        except _Timeout:
+            rec.update(outcome="timeout", cls=f"> {TIMEOUT} s")
+        except jc.JunctureError as exc:
+            rec.update(outcome="refused", cls=message_class(exc)[:160], message=str(exc))
+        except Exception as exc:
+            rec.update(outcome="crash", cls=f"{type(exc).__name__} at {crash_location(exc)}",
+                       message=str(exc), traceback=traceback.format_exc())
+        finally:
+            signal.alarm(0)
+        out.append(rec)
+    return out
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--n", type=int, default=40)
+    parser.add_argument("--seed", type=int, default=11)
+    parser.add_argument("--save", type=Path, default=None)
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("--only", type=str, default=None, help="comma list of deck indices")
+    args = parser.parse_args(argv)
+
+    drawn = draw_decks(args.n, args.seed)
+    jobs = [(i, text) for i, (text, _) in enumerate(drawn)]
+    if args.only:
+        keep = {int(s) for s in args.only.split(",")}
+        jobs = [j for j in jobs if j[0] in keep]
+    t0 = time.time()
+    with multiprocessing.get_context("fork").Pool(args.jobs) as pool:
+        results = pool.map(survey_deck, jobs, chunksize=1)
+    records = [r for rs in results for r in rs]
+    print(f"mesh survey: {len(jobs)} decks (seed {args.seed}) in {time.time() - t0:.0f} s")
+    for label, _ in OPTIONS:
+        mine = [r for r in records if r["options"] == label]
+        count = collections.Counter(r["outcome"] for r in mine)
+        print(f"\n{label}: " + ", ".join(f"{k} {v}" for k, v in sorted(count.items())))
+        closed = [r for r in mine if r["outcome"] in ("closed", "kept")]
+        if closed:
+            import numpy as np
+
+            mins = np.array([r["min_angle"] for r in closed])
+            s20 = np.array([r["share20"] for r in closed])
+            secs = np.array([r["seconds"] for r in closed])
+            print(f"  min angle: median {np.median(mins):.2f}, worst {mins.min():.2f}, "
+                  f">= 5 deg on {np.mean(mins >= 5):.0%}; share >= 20 deg: median "
+                  f"{np.median(s20):.3f}, worst {s20.min():.3f}; mesh seconds median "
+                  f"{np.median(secs):.2f}, max {secs.max():.2f}")
+            vol = [r["volume_error"] for r in closed if "volume_error" in r]
+            if vol:
+                print(f"  volume vs A(x): median {np.median(vol):+.3%}, worst "
+                      f"{min(vol):+.3%} / {max(vol):+.3%}")
+        classes = collections.defaultdict(list)
+        for r in mine:
+            if "cls" in r:
+                classes[(r["outcome"], r["cls"])].append(r["deck"])
+        for (outcome, cls), idx in sorted(classes.items(), key=lambda t: -len(t[1])):
+            print(f"  {len(idx):>3} {outcome}: {cls}  decks {idx[:8]}")
+    if args.save:
+        args.save.mkdir(parents=True, exist_ok=True)
+        (args.save / "records.json").write_text(json.dumps(records, indent=1))
+        for i, (text, _) in enumerate(drawn):
+            if any(r["deck"] == i and r["outcome"] not in ("closed",) for r in records):
+                (args.save / f"deck{i:03d}.inp").write_text(text)
+
+
+if __name__ == "__main__":
+    main()
