@@ -48,10 +48,10 @@ def _radial(triangles, unit):
 
 
 def _models(geometry, mesh, kind):
-    """{component index: [models]} of the mesh's components that are ``kind``; a juncture
-    block of the four-block layout ("wing-body upper", body arcs and wing in one network)
-    ("wing-body") gets every model of that kind (each move lifts only points whose flat triangle lies on
-    that model's surface)."""
+    """{component index: [models]} of the mesh's components that are ``kind``. The
+    four-block layout's juncture blocks ("wing-body": body arcs and wing in one network) get
+    every model of that kind: each move lifts only points whose flat triangle lies on that
+    model's surface."""
     comps = getattr(geometry, "configuration", None)
     if comps is None:
         return {}
