@@ -10,7 +10,8 @@ each once more with ``single_network=True`` (15 runs per deck). Every run is cla
   intersection points off either surface by more than 1e-9 of the fuselage length (against
   the deck's own numbers, see ``tests/deckgen``, and against juncture's model of the
   fuselage or pod), NaN or inf in a network, fillet or station, fillet points inside the
-  fuselage or the wing (deeper than 1e-6 L), a ``keep_area`` residual above 1e-6, a
+  fuselage or the wing (deeper than 1e-6 L), a canard, tail or fin network inside the
+  fuselage it meets (deeper than 1e-6 L), a ``keep_area`` residual above 1e-6, a
   re-designed fuselage larger than the original;
 - ``JunctureError``: by message class (numbers replaced by ``#``);
 - ``crash``: any other exception, by type and the innermost juncture frame (file:line);
@@ -153,6 +154,14 @@ def check_geometry(geo, description, keep_area, single_network=False, fillet=Non
                           ("b_own_jump", "juncture's model, on a joint step or an end")):
             if row[key] is not None and row[key] > TOL_POINT:
                 defects.append((f"intersection off the {b} ({what}): {pair}", row[key]))
+    body = geo.configuration["body"]
+    for name, comp in description["components"].items():
+        if comp["kind"] in ("canard", "tail", "fin") and "body" in comp.get("touches", ()):
+            nets = [np.asarray(v) for k, v in geo.networks.items() if k.startswith(name + " ")]
+            depth = max((-body.signed_distance(n).min() for n in nets), default=0.0)
+            if depth / description["length"] > TOL_FILLET:
+                defects.append((f"{_role(description, name)} network inside the fuselage",
+                                depth / description["length"]))
     if geo.fillets:
         inside_body, inside_wing = fillet_depths(geo, description)
         if inside_body > TOL_FILLET:
