@@ -43,3 +43,20 @@ def test_a_traced_curve_runs_the_way_the_lines_do_whatever_the_root_line_does():
         way = np.sign(net[-1, -1, 0] - net[-1, 0, 0])
         assert np.all(np.sign(out[1:, -1, 0] - out[1:, 0, 0]) == way)
         assert _folded_quads(out[1:]) == 0
+
+
+def test_the_lines_of_a_fillet_keep_their_order_and_a_curve_goes_in_outboard_of_them():
+    """A fillet's lines run down the fuselage side, so their mean span is not increasing (a
+    generated low wing: 10.69, 10.56, 10.59, 10.74; here 2, 1.87, 1.84, 2.05); sorting every
+    line by span swapped two of them and folded the wing's surface. The curve goes in after
+    the last line not outboard of it; the other lines keep their order."""
+    wing = SimpleNamespace(name="w")
+    net = _wing_lower(False)
+    fillet = np.stack([net[0] + [0.0, dy, dz] for dy, dz in
+                       ((-0.13, -0.5), (-0.16, -1.0), (0.05, -1.4))])
+    net = np.concatenate([net[:1], fillet, net[1:]])
+    out = add_trace_curves(wing, {"w lower": net}, [("lower", _curve(7.5))])["w lower"]
+    assert len(out) == len(net) + 1
+    np.testing.assert_array_equal(out[:5], net[:5])   # body line, the fillet's, span 6
+    np.testing.assert_array_equal(out[5], _curve(7.5))
+    np.testing.assert_array_equal(out[6], net[5])      # span 10

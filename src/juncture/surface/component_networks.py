@@ -252,8 +252,13 @@ def add_trace_curves(wing, nets, traces):
         # is then its last, and the result is reversed back so the normals stay outward.
         backward = net[0, :, 1].mean() > net[-1, :, 1].mean()
         base = net[::-1] if backward else net
-        span = np.concatenate([base[1:], np.stack(add)], axis=0)
-        rest = span[np.argsort(span[:, :, 1].mean(axis=1), kind="stable")]
-        merged = np.concatenate([base[:1], rest], axis=0)  # the body-side line stays first
+        rest = list(base[1:])
+        for c in sorted(add, key=lambda c: c[:, 1].mean()):
+            # after the last line not outboard of it: the lines are kept in their order (a
+            # fillet's lines down the fuselage side are not in span order)
+            means = np.array([r[:, 1].mean() for r in rest])
+            pos = int(np.flatnonzero(means <= c[:, 1].mean()).max(initial=-1)) + 1
+            rest.insert(pos, c)
+        merged = np.concatenate([base[:1], np.stack(rest)], axis=0)  # body-side line first
         out[name] = merged[::-1] if backward else merged
     return out
