@@ -317,18 +317,63 @@ def _caps(vertices, triangles, tol):
         if dist > tol:
             strip = strip_cap(vertices, loop)
             if strip is None:
+                strip = _tip_and_strip(vertices, loop, tol)
+            if strip is None:
                 open_.append(loop)
             else:
                 caps.append(strip)
                 where.append(loop[0])
             continue
-        tri = loop[_cap((pts - c) @ axes.T)]
-        # The cap runs against the loop: flip where it runs with it.
-        if _runs_with(tri, loop):
-            tri = tri[:, ::-1]
-        caps.append(tri)
+        caps.append(_planar_cap(vertices, loop))
         where.append(loop[0])
     return caps, where, open_
+
+
+def _planar_cap(vertices, loop):
+    """Triangles of a planar loop's cap, running against the loop."""
+    pts = vertices[loop]
+    c, _, axes, _ = _plane(pts)
+    tri = loop[_cap((pts - c) @ axes.T)]
+    return tri[:, ::-1] if _runs_with(tri, loop) else tri
+
+
+def _equal_run(p):
+    """(start, length) of the longest cyclic run of consecutive points with one coordinate
+    bit-identical (a wing tip's points share its span station), or None (under 3)."""
+    k, best = len(p), None
+    for axis in range(3):
+        same = p[:, axis] == np.roll(p[:, axis], -1)          # i and i + 1 share it
+        if same.all():
+            continue
+        start = int(np.flatnonzero(~same)[0]) + 1               # a run starts after a break
+        run = 0
+        for i in range(k):
+            j = (start + i) % k
+            if same[j]:
+                run += 1
+                continue
+            if run + 1 >= 3 and (best is None or run + 1 > best[1]):
+                best = ((j - run) % k, run + 1)
+            run = 0
+    return best
+
+
+def _tip_and_strip(vertices, loop, tol):
+    """Cap triangles of a loop that is a planar tip and a thin strip joined (a wing whose
+    blunt trailing edge runs into its tip: the tip's points share the span station), split
+    along the chord between the tip's two ends; None where it is not that."""
+    found = _equal_run(vertices[loop])
+    if found is None:
+        return None
+    start, n = found
+    rolled = np.roll(loop, -start)
+    tip, rest = rolled[:n], np.concatenate([rolled[n - 1:], rolled[:1]])
+    if _plane(vertices[tip])[3] > tol or len(rest) < 4:
+        return None
+    strip = strip_cap(vertices, rest)
+    if strip is None:
+        return None
+    return np.concatenate([_planar_cap(vertices, tip), strip])
 
 
 def _runs_with(tri, loop):
