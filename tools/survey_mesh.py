@@ -5,7 +5,8 @@ Draws N decks from ``tests.deckgen.decks()`` with a fixed hypothesis seed (the s
 fillet and ``keep_area``, and meshes it with the defaults. Every run is classified:
 
 - ``closed``: ``mesh`` returned a surface that passed every check; its enclosed volume is
-  compared with an independent integral of the model's union of normal areas A(x) (sharp
+  compared with an independent integral of the union of normal areas A(x) of the model kept
+  with the geometry (roots outside the fuselage continued to it; sharp
   runs only: a fillet adds area the model does not have), and its triangle angles recorded;
 - ``kept``: closed, but the re-triangulation for quality was not kept (a warning);
 - ``complete``: ``complete`` refused the deck (issue 11's business, not the mesh's);
@@ -98,7 +99,7 @@ def survey_deck(job):
             rec["share20"] = float(np.mean(ang.min(axis=1) >= 20.0))
             rec["triangles"] = int(len(surface.triangles))
             if not kwargs:
-                ref, _ = union_volume(cfg)
+                ref, _ = union_volume(geo.configuration)
                 rec["volume_error"] = surface.volume() / ref - 1.0
         except _Timeout:
             rec.update(outcome="timeout", cls=f"> {TIMEOUT} s")

@@ -174,3 +174,23 @@ def test_a_canard_buried_past_mid_span_keeps_its_exposed_part():
         assert body.signed_distance(net).min() > -1e-9 * size
         tip = canard.le[-1, 1]
         assert np.isclose(net[..., 1].max(), tip)
+
+
+@pytest.mark.parametrize("keep_area", [False, True])
+def test_a_pointed_tail_given_as_one_point_stays_one_point(keep_area):
+    """An arbitrary fuselage whose last section is one point repeated (a generated airplane,
+    tests/data/generated/README.md): every network row there is that one point, bit for bit,
+    with the fuselage as given and re-designed (keep_area scales its sections), so the
+    surface closes at it. The section blend a + w (b - a) had put them an ulp apart."""
+    cfg = jc.read(DATA / "generated" / "arbitrary_body_pointed_upswept_tail.inp")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(cfg, "cubic" if keep_area else None, keep_area)
+    tip = np.asarray(cfg["body"].sections[-1])[0]
+    for name in ("body upper", "body lower"):
+        net = np.asarray(geo.networks[name])
+        end = net[np.argmax(net[:, 0, 0])]
+        assert {tuple(p) for p in end.tolist()} == {(cfg["body"].x[-1], *tip.tolist())}
+    surface = jc.mesh(geo, min_angle=0)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent

@@ -140,16 +140,16 @@ class PolylineFrame(_Frame):
         s = np.asarray(s, float)
         j = np.where(above, (u <= s[:, None]).sum(-1), (u < s[:, None]).sum(-1)) - 1
         j = np.clip(j, 0, b._count[k] - 2)
-        p0 = b._a[k, j] + w[:, None] * b._d[k, j]
-        p1 = b._a[k, j + 1] + w[:, None] * b._d[k, j + 1]
+        p0 = b._blend(k, w[:, None], j)
+        p1 = b._blend(k, w[:, None], j + 1)
         # A zero-length piece (a repeated point): the next non-degenerate one along.
         for step in (1, -1):
             flat = np.hypot(*(p1 - p0).T) <= 0
             if not flat.any():
                 break
             jj = np.clip(j + step, 0, b._count[k] - 2)
-            q0 = b._a[k, jj] + w[:, None] * b._d[k, jj]
-            q1 = b._a[k, jj + 1] + w[:, None] * b._d[k, jj + 1]
+            q0 = b._blend(k, w[:, None], jj)
+            q1 = b._blend(k, w[:, None], jj + 1)
             p0 = np.where(flat[:, None], q0, p0)
             p1 = np.where(flat[:, None], q1, p1)
         return p0, p1

@@ -50,7 +50,7 @@ class SectionReduction(BodyReduction):
             w = np.clip((merged - xg[k]) / (xg[k + 1] - xg[k]), 0.0, 1.0)
             for kk, ww in zip(k, w):
                 n = int(body._count[kk])
-                polys.append(body._a[kk, :n] + ww * body._d[kk, :n])
+                polys.append(body._blend(kk, ww, slice(0, n)))
                 params.append(body._u[kk, :n].copy())
         self.polylines, self.params = polys, params
         moments = np.array([area_and_centroid(p) for p in polys]).reshape(-1, 2)
