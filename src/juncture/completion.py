@@ -255,15 +255,19 @@ def _other_components(cfg, wing, body, opts, log, known=None):
 
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
-    from .surface.body_split import Boundary, boundary_from_points, seam_gap, split_body
+    from .surface.body_split import (Boundary, boundary_from_points, forward, seam_gap,
+                                     split_body)
 
-    ups = [Boundary(fu.start[:, 0], fu.theta_start, "wing", fu.start)]
-    los = [Boundary(fl.start[:, 0], fl.theta_start, "wing", fl.start)]
+    ku, kl = forward(fu.start[:, 0]), forward(fl.start[:, 0])
+    ups = [Boundary(fu.start[ku, 0], fu.theta_start[ku], "wing", fu.start[ku])]
+    los = [Boundary(fl.start[kl, 0], fl.theta_start[kl], "wing", fl.start[kl])]
     fins, port = [], []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
-            ups.append(boundary_from_points(body, up.points, comp.name))
-            los.append(boundary_from_points(body, lo.points, comp.name))
+            ups.append(boundary_from_points(body, up.points[forward(up.points[:, 0])],
+                                            comp.name))
+            los.append(boundary_from_points(body, lo.points[forward(lo.points[:, 0])],
+                                            comp.name))
         elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
             fins.append(boundary_from_points(body, up.points, comp.name))
             port.append(boundary_from_points(body, mirror_points(lo.points), comp.name))

@@ -20,8 +20,8 @@ import numpy as np
 
 from .networks import body_range, orient, radial_outward
 
-__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "split_body", "seam_gap",
-           "polyline_gap"]
+__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "forward", "split_body",
+           "seam_gap", "polyline_gap"]
 
 
 class Boundary:
@@ -51,6 +51,21 @@ def boundary_from_points(body, points, name=""):
 
     ok = np.all(np.isfinite(points), axis=1)
     return Boundary(points[ok, 0], _body_angle(body, points[ok]), name, points[ok])
+
+
+def forward(x):
+    """(k,) bool: the points of a line (in its order) whose x lies beyond every earlier
+    kept point's. The network rows are at constant x, so a block's boundary cannot follow
+    a line back in x (a wing root's second point ahead of its leading-edge point): such a
+    point stays on the wing's root line only, and the small loop it leaves between the
+    wing and the fuselage is capped. NaN is never kept."""
+    x = np.asarray(x, float)
+    keep = np.zeros(x.size, bool)
+    top = -np.inf
+    for i, xi in enumerate(x):
+        if np.isfinite(xi) and xi > top:
+            keep[i], top = True, xi
+    return keep
 
 
 def bounding_curve(x, regions, x_nose, x_end, side=0.0):
