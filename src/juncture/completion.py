@@ -255,8 +255,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
 
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
-    from .surface.body_split import (Boundary, boundary_from_points, forward, seam_gap,
-                                     split_body)
+    from .surface.body_split import Boundary, boundary_from_points, forward, seam_gap, split_body
 
     ku, kl = forward(fu.start[:, 0]), forward(fl.start[:, 0])
     ups = [Boundary(fu.start[ku, 0], fu.theta_start[ku], "wing", fu.start[ku])]
