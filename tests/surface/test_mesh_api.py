@@ -194,3 +194,18 @@ def test_a_pointed_tail_given_as_one_point_stays_one_point(keep_area):
     surface = jc.mesh(geo, min_angle=0)
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
+
+
+def test_a_pointed_circular_tail_is_one_point():
+    """A circular fuselage whose last radius is 0: the cubic through the stations gives
+    8.9e-16 there, and the sections at the end were a ring of points that far apart (the
+    fuselage's blocks were then not charted for re-triangulation: slivers). The value at
+    the last station is the deck's."""
+    cfg = jc.read(EXAMPLE_DECK)
+    body = cfg["body"]
+    body = type(body)(body.name, body.x, np.r_[body.radius[:-1], 0.0], body.camber,
+                      body.origin, body.segments)
+    x = body.x_global[-1]
+    assert body.radius_at(np.array([x]))[0] == 0.0
+    pts = body.point(np.full(7, x), np.linspace(-0.5 * np.pi, 0.5 * np.pi, 7))
+    assert len({tuple(p) for p in (pts + 0.0).tolist()}) == 1

@@ -129,6 +129,13 @@ class _Piecewise:
         self.coefs = np.concatenate(coefs, axis=1)  # (4, n_pieces, cols)
         self.ncols = columns.shape[1]
         self.segment_pieces = np.concatenate(own)
+        # The last station is the right end of its cubic, which gives its value only to
+        # rounding (a pointed tail's radius 0 came out 8.9e-16): taken as given there.
+        self.end = (float(x[-1]), np.asarray(columns[-1], float))
+
+    def _exact_end(self, xq, values):
+        at = xq == self.end[0]
+        return np.where(at[..., None], self.end[1], values) if at.any() else values
 
     def value_and_slope(self, xq, pieces=None):
         """Values and x-derivatives at xq in one pass (shared coefficient gather).
@@ -145,7 +152,8 @@ class _Piecewise:
         k = np.minimum(np.maximum(np.searchsorted(self.breaks, xq, side="right") - 1, lo), hi)
         t = (xq - self.breaks[k])[..., None]
         c3, c2, c1, c0 = self.coefs[:, k]
-        return ((c3 * t + c2) * t + c1) * t + c0, (3 * c3 * t + 2 * c2) * t + c1
+        return (self._exact_end(xq, ((c3 * t + c2) * t + c1) * t + c0),
+                (3 * c3 * t + 2 * c2) * t + c1)
 
     def __call__(self, xq, nu=0):
         xq = np.asarray(xq, dtype=float)
@@ -155,7 +163,7 @@ class _Piecewise:
         t = (xq - self.breaks[k])[..., None]
         c3, c2, c1, c0 = self.coefs[:, k]
         if nu == 0:
-            return ((c3 * t + c2) * t + c1) * t + c0
+            return self._exact_end(xq, ((c3 * t + c2) * t + c1) * t + c0)
         if nu == 1:
             return (3 * c3 * t + 2 * c2) * t + c1
         if nu == 2:
