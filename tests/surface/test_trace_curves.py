@@ -60,3 +60,28 @@ def test_the_lines_of_a_fillet_keep_their_order_and_a_curve_goes_in_outboard_of_
     np.testing.assert_array_equal(out[:5], net[:5])   # body line, the fillet's, span 6
     np.testing.assert_array_equal(out[5], _curve(7.5))
     np.testing.assert_array_equal(out[6], net[5])      # span 10
+
+
+def test_a_pylons_two_lines_a_hair_apart_in_x_make_one_station_of_the_pod():
+    """A pylon's outboard and inboard lines meet its pod 1e-5 apart in x (a generated
+    airplane): the pod's network had two rows that close, and every triangle between them
+    was a sliver. Points within a thousandth of the pod's length share one row, which ends
+    exactly at each of them."""
+    from juncture.model import CircularBody
+    from juncture.surface.component_networks import nacelle_network
+
+    pod = CircularBody("pod 1", np.array([0.0, 4.0, 12.0, 20.0]),
+                       np.array([1.0, 2.0, 2.0, 0.0]), origin=np.array([100.0, 20.0, -5.0]))
+    x = np.array([104.0, 106.5, 109.0, 111.0])
+    top = pod.point(x[:, None], np.array([1.4, 1.74]))     # just either side of the top
+    out_pts, in_pts = top[:, 0], pod.point(x + 1e-5, 1.74)
+    in_pts[[0, -1]] = out_pts[[0, -1]]          # the leading and trailing edges: one point
+
+    def line(pts):
+        return SimpleNamespace(points=pts, found=np.ones(len(pts), bool))
+
+    net = nacelle_network(pod, [(line(out_pts), line(in_pts))])
+    rows = net[:, 1:-1, 0]                                   # the arcs' inner points
+    assert np.diff(np.unique(rows)).min() > 1e-3 * 20.0      # no two rows a hair apart
+    for pts, col in ((out_pts, -1), (in_pts, 0)):
+        assert all(any(np.array_equal(p, q) for q in net[:, col]) for p in pts)

@@ -156,9 +156,10 @@ def nacelle_network(pod, pylon_inters, n_points=None):
     Returns
     -------
     (n_lines, n_points, 3) float
-        Cross-sections at the pod stations and at the intersection points' x; where a pylon
-        sits, each runs from its inboard line round the bottom to its outboard line, ending
-        exactly at the intersection points at their own stations.
+        Cross-sections at the pod stations and at the intersection points' x (one station
+        for points within :data:`SAME_STATION` of the length of each other or of a pod
+        station); where a pylon sits, each runs from its inboard line round the bottom to
+        its outboard line, ending exactly at the intersection points at their stations.
     """
     n = int(n_points or 37)
     xg = pod.x_global
@@ -176,13 +177,14 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         th_i_at = np.interp(xo, in_i.points[ok_i, 0][order], np.unwrap(th_i[order]))
         spans.append((xo, th_o, th_i_at))
         ends.append((out_i.points[ok_o], in_i.points[ok_i]))
-    xs = np.union1d(xg, np.concatenate([p[:, 0] for e in ends for p in e])) if spans else xg
+    xs = _stations(xg, [p[:, 0] for e in ends for p in e]) if spans else xg
     # Full circles start and end at the top, so the arcs under a pylon continue them smoothly.
     lo = np.full(xs.size, 0.5 * np.pi)
     hi = np.full(xs.size, 2.5 * np.pi)
     for xo, th_o, th_i in spans:
         order = np.argsort(xo)
-        inside = (xs >= xo.min()) & (xs <= xo.max())
+        rows = _nearest(xs, xo)
+        inside = (np.arange(xs.size) >= rows.min()) & (np.arange(xs.size) <= rows.max())
         # From the inboard line (theta just above pi/2) round the bottom to the outboard one.
         lo[inside] = np.interp(xs[inside], xo[order], np.mod(th_i[order], 2 * np.pi))
         hi[inside] = np.interp(xs[inside], xo[order], np.mod(th_o[order], 2 * np.pi)) + \
@@ -196,8 +198,31 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         lo_x, hi_x = outboard[:, 0].min(), outboard[:, 0].max()
         for col, pts in ((-1, outboard), (0, inboard)):
             pts = pts[(pts[:, 0] >= lo_x) & (pts[:, 0] <= hi_x)]  # where the arc is open
-            net[np.searchsorted(xs, pts[:, 0]), col] = pts
+            net[_nearest(xs, pts[:, 0]), col] = pts
     return net
+
+
+#: Stations of a pod's network closer than this share of its length are one station.
+SAME_STATION = 1e-3
+
+
+def _stations(xg, extra):
+    """The pod's stations and the intersection points' x, but one station where they lie
+    within :data:`SAME_STATION` of the pod's length (a pylon's outboard and inboard lines
+    meet the pod 1e-5 apart in x: two rows that close made slivers); the pod's own
+    stations are kept first, then the points' in order."""
+    tol = SAME_STATION * float(xg[-1] - xg[0])
+    kept = list(xg)
+    for x in np.sort(np.concatenate(extra)):
+        if np.min(np.abs(np.asarray(kept) - x)) > tol:
+            kept.append(float(x))
+    return np.unique(np.asarray(kept, float))
+
+
+def _nearest(xs, x):
+    """Index of the station of ``xs`` (sorted) nearest each of ``x``."""
+    i = np.clip(np.searchsorted(xs, x), 1, xs.size - 1)
+    return np.where(np.abs(x - xs[i - 1]) <= np.abs(xs[i] - x), i - 1, i)
 
 
 def trace_curve(wing, side, line):
