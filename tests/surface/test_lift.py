@@ -54,7 +54,10 @@ def test_the_enclosed_volume_comes_to_the_models(transport):
 
 
 def test_new_points_on_a_body_lie_on_its_circle(transport):
-    """The body's own new vertices (not on a seam) are on r(x) about its centre line."""
+    """The body's own new vertices (not on a seam) are on r(x) about its centre line, but
+    those nearer a seam than ten times their lift (remesh.TAPER), lifted part of the way
+    (between the flat triangles and the circle), so that they cannot cross a surface that
+    meets the body at a small angle."""
     _, geo, assembled, lifted = transport
     new = _owners(lifted, "body")
     new = new[new >= len(assembled.vertices)]
@@ -62,7 +65,8 @@ def test_new_points_on_a_body_lie_on_its_circle(transport):
     body = geo.configuration.components["body"]
     rho, radius, _, _ = _polar(body, lifted.vertices[new], False)  # on the plane y = 0
     on = np.abs(rho - radius) <= ON_BODY * size
-    assert len(new) > 1000 and on.mean() > 0.9
+    assert len(new) > 1000 and on.mean() > 0.85
+    assert np.all(rho <= radius + ON_BODY * size)      # the others toward the circle
 
 
 def test_new_points_on_a_wing_lie_on_its_sections(transport):

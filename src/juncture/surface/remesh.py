@@ -48,6 +48,10 @@ SHORTEST = 0.02
 #: A patch whose area is below this share of a circle's of its boundary's length is a
 #: sliver: it keeps its triangles.
 SLIVER = 1e-3
+#: A new point lifted onto the exact surface moves at most 1 / TAPER of its distance from
+#: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
+#: still cross).
+TAPER = 10.0
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
 _NONE = (np.zeros(0), np.zeros(0, int))
@@ -329,16 +333,31 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
 
 
 
-def _lifted(patch, points, under):
-    """Points on the patch's chart triangles ``under``, lifted onto the exact surface."""
-    return patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
+def _lifted(patch, points, under, query=None):
+    """Points on the patch's chart triangles ``under``, lifted onto the exact surface; with
+    the chart points ``query``, a point nearer the patch's boundary than :data:`TAPER`
+    times its lift is lifted that share of the way only. The seams are straight chords of
+    the exact intersection lines: a point next to one lifted in full stands out of the chord
+    by the sag, and where the surfaces meet at a small angle (a low wing's upper surface
+    and the fuselage side) it went through the other surface."""
+    lifted = patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
+    if query is None or not len(points):
+        return lifted
+    a, b = patch.uv[patch.edges[:, 0]], patch.uv[patch.edges[:, 1]]
+    d = b - a
+    length = np.linalg.norm(d, axis=1)
+    t = np.clip(((query[:, None] - a) * d).sum(-1) / np.maximum(length ** 2, 1e-300), 0, 1)
+    dist = np.linalg.norm(query[:, None] - a - t[..., None] * d, axis=-1)
+    move = np.linalg.norm(lifted - points, axis=1)
+    w = np.clip(dist.min(axis=1) / np.maximum(TAPER * move, 1e-300), 0.0, 1.0)
+    return points + w[:, None] * (lifted - points)
 
 
 def _on_surface(patch, vertices, query):
     """(3-D points, chart triangles under them) of chart points: on the assembled triangles,
     lifted onto the exact surface where the patch has one."""
     xyz, under = locate(patch.uv, patch.tri, vertices[patch.ids], query, patch.find)
-    return (xyz if patch.lift is None else _lifted(patch, xyz, under)), under
+    return (xyz if patch.lift is None else _lifted(patch, xyz, under, query)), under
 
 
 def _area3(p):
