@@ -93,7 +93,10 @@ def _complete_refined(cfg, k):
         return jc.complete(cfg, refine=k)
 
 
-GENERATED = sorted((DATA / "generated").glob("*.inp"))
+# generated/assembly: airplanes whose assembled surface closes, but whose re-triangulation
+# does not yet reach test_remesh's angles (tests/data/generated/README.md)
+GENERATED = sorted((DATA / "generated").glob("*.inp")) + sorted(
+    (DATA / "generated" / "assembly").glob("*.inp"))
 
 
 @pytest.mark.parametrize("deck", GENERATED, ids=[p.stem for p in GENERATED])
