@@ -576,7 +576,6 @@ class ArbitraryBody:
     _u: np.ndarray = None
     _a: np.ndarray = None
     _b: np.ndarray = None
-    _d: np.ndarray = None
     _count: np.ndarray = None
     _grid: np.ndarray = None
     _lipschitz: tuple = None
@@ -617,12 +616,10 @@ class ArbitraryBody:
         grid = np.concatenate([a, b])  # every vertex of every section (bounding boxes)
         for arr in (u, a, b, count, grid):
             arr.flags.writeable = False
-        d = b - a
-        d.flags.writeable = False
         for field, value in (("x", x), ("sections", tuple(secs)), ("segments", seg),
                              ("mirrored", bool(self.mirrored)), ("params", params),
-                             ("_u", u), ("_a", a), ("_b", b),
-                             ("_d", d), ("_count", count), ("_grid", grid),
+                             ("_u", u), ("_a", a), ("_b", b), ("_count", count),
+                             ("_grid", grid),
                              ("_lipschitz", (float(1.0 + speed.max()),
                                              range_max_table(speed)))):
             object.__setattr__(self, field, value)
