@@ -57,6 +57,8 @@ def test_refine_must_be_a_positive_integer(tmp_path, capsys):
 
 @pytest.mark.parametrize("flag, value, expected", [("--min-angle", "40", "0 (off) to 30"),
                                                    ("--tolerance", "0", "> 0"),
+                                                   ("--curvature", "0", "> 0 and <= 90"),
+                                                   ("--depth", "0", "> 0"),
                                                    ("--edge-length", "-1", "> 0")])
 def test_sizing_options_out_of_range_get_one_line(tmp_path, capsys, flag, value, expected):
     assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "o"), flag, value]) == 2

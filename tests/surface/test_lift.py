@@ -69,6 +69,59 @@ def test_new_points_on_a_body_lie_on_its_circle(transport):
     assert np.all(rho <= radius + ON_BODY * size)      # the others toward the circle
 
 
+def _shared(mesh, names):
+    """Vertex ids of seams within the components ``names``: used by two of their surfaces
+    or more (no cap) and by no other component."""
+    comps = [mesh.components.index(n) for n in names]
+    inside = np.isin(mesh.component, comps)
+    caps = np.array([s.endswith(" cap") for s in mesh.surfaces])[mesh.surface]
+    other = np.zeros(len(mesh.vertices), bool)
+    other[mesh.triangles[~inside | caps].ravel()] = True
+    pairs = np.unique(np.stack([mesh.triangles[inside].ravel(),
+                                np.repeat(mesh.surface[inside], 3)], 1), axis=0)
+    count = np.bincount(pairs[:, 0], minlength=len(mesh.vertices))
+    return np.flatnonzero((count > 1) & ~other)
+
+
+def test_split_points_between_body_blocks_lie_on_its_circle(transport):
+    """A seam between two blocks of the fuselage (upper and lower surfaces, their images) is
+    split where the re-triangulation needs points; a split point lies on the circle, not on
+    the straight input edge, whose chord cut in by up to 0.22 ft (the bounding curve turns
+    between stations 40 ft apart)."""
+    _, geo, assembled, lifted = transport
+    seam = _shared(lifted, ["body"])
+    new = seam[seam >= len(assembled.vertices)]
+    p = lifted.vertices[seam].copy()
+    p[:, 1] = np.abs(p[:, 1])
+    rho, radius, _, _ = _polar(geo.configuration.components["body"], p, False)
+    assert len(new) > 100
+    assert np.abs(rho - radius).max() <= ON_BODY * np.ptp(lifted.vertices, axis=0).max()
+
+
+def test_split_points_on_intersection_lines_stay_on_their_edges(transport):
+    """Where the two sides of a seam would lift a point apart (the wing's section and the
+    body's circle along their intersection line), a split point stays on the input edge:
+    both sides keep it, bit for bit, and it lies on the chord between two of juncture's
+    intersection points."""
+    _, _, assembled, lifted = transport
+    both = _shared(lifted, ["body", "wing"])
+    only = set(_shared(lifted, ["body"])) | set(_shared(lifted, ["wing"]))
+    new = np.array([v for v in both if v >= len(assembled.vertices) and v not in only])
+    seam = _shared(assembled, ["body", "wing"])
+    seam = np.setdiff1d(seam, np.concatenate([_shared(assembled, ["body"]),
+                                              _shared(assembled, ["wing"])]))
+    a = assembled.vertices[seam]
+    p = lifted.vertices[new]
+    # distance of each new point to the nearest chord between two seam vertices
+    d = a[None, :, None] - a[None, None, :]                  # (1, k, k, 3): a_i - a_j
+    t = np.einsum("nijc,nijc->nij", p[:, None, None] - a[None, None, :], d) / np.maximum(
+        np.einsum("nijc,nijc->nij", d, d), 1e-300)
+    foot = a[None, None, :] + np.clip(t, 0, 1)[..., None] * d
+    dist = np.linalg.norm(p[:, None, None] - foot, axis=-1).min(axis=(1, 2))
+    assert len(new) > 10
+    assert dist.max() <= 1e-9 * np.ptp(lifted.vertices, axis=0).max()
+
+
 def test_new_points_on_a_wing_lie_on_its_sections(transport):
     """The wing's own new vertices are on the model's upper or lower surface (PCHIP through
     the ordinates), at their span station and chord fraction."""

@@ -212,3 +212,21 @@ def test_a_pointed_circular_tail_is_one_point():
     assert body.radius_at(np.array([x]))[0] == 0.0
     pts = body.point(np.full(7, x), np.linspace(-0.5 * np.pi, 0.5 * np.pi, 7))
     assert len({tuple(p) for p in (pts + 0.0).tolist()}) == 1
+
+
+@pytest.mark.slow
+def test_curvature_and_depth_bring_the_transport_within_half_a_percent():
+    """Sizing by the exact surfaces (remesh._bent): edges turning by at most 10 deg of a
+    curved surface and cutting into it by at most 3e-3 of its size bring the enclosed volume
+    from 0.67 % to under 0.5 % short of the model's, still closed and valid."""
+    import trimesh
+
+    cfg = jc.read(EXAMPLE_DECK)
+    exact = _model_volume(cfg)
+    geo = _complete_refined(cfg, 1)
+    default = jc.mesh(geo)
+    sized = jc.mesh(geo, curvature=10.0, depth=3e-3)
+    tm = trimesh.Trimesh(sized.vertices, sized.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    assert abs(sized.volume() / exact - 1.0) < 0.005 < abs(default.volume() / exact - 1.0)
+    assert len(sized.triangles) > len(default.triangles)

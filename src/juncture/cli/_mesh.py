@@ -27,6 +27,14 @@ def add_parser(sub, common):
     s.add_argument("--tolerance", type=float, default=1e-4, metavar="SHARE",
                    help="largest distance of a triangle's centre from the surface, as a "
                         "share of the airplane's size (default 1e-4)")
+    s.add_argument("--curvature", type=float, default=None, metavar="DEG",
+                   help="largest turn of a curved surface (a body, a wing section) under one "
+                        "triangle edge (default: no such limit; 10 is a good start)")
+    s.add_argument("--depth", type=float, default=None, metavar="SHARE",
+                   help="largest distance of an edge's middle from the exact surface, as a "
+                        "share of its size there (a body's radius, a wing section's "
+                        "thickness; default: no such limit); the volume converges as it "
+                        "shrinks, at many more triangles (3e-3 is a good start)")
     s.add_argument("--edge-length", type=float, default=None, metavar="H",
                    help="no triangle larger than an equilateral one of edge H (deck units; "
                         "default: none, the angle and the tolerance decide)")
@@ -72,7 +80,8 @@ def run(args, progress):
         if args.min_angle:
             bar.step(f"re-triangulate (smallest angle {args.min_angle:g} deg)")
             better, checked = quality(mesh, args.min_angle, args.edge_length, args.tolerance,
-                                      lift=surface_lift(geo, mesh))
+                                      lift=surface_lift(geo, mesh),
+                                      curvature=args.curvature, depth=args.depth)
             if checked is not None:
                 mesh, report, summary = better, checked, summarize(better)
         bar.step("write " + " ".join(args.format))
@@ -99,5 +108,9 @@ def _check_sizing(args, fail):
              "smallest angle cannot be guaranteed)")
     if not args.tolerance > 0.0:
         fail(f"--tolerance {args.tolerance:g}: expected a share of the size > 0, e.g. 1e-4")
+    if args.curvature is not None and not 0.0 < args.curvature <= 90.0:
+        fail(f"--curvature {args.curvature:g}: expected an angle in degrees, > 0 and <= 90")
+    if args.depth is not None and not args.depth > 0.0:
+        fail(f"--depth {args.depth:g}: expected a share of the surface's size > 0, e.g. 3e-3")
     if args.edge_length is not None and not args.edge_length > 0.0:
         fail(f"--edge-length {args.edge_length:g}: expected a length > 0 in deck units")

@@ -30,6 +30,11 @@ ON_BODY = 1e-9
 FACING = 0.2
 
 
+#: Chord fractions sampled for a wing section's largest thickness.
+THICKNESS_SAMPLES = 21
+#: A wing section's size is at least this share of its chord.
+THIN = 0.02
+
 #: A wing's triangle is lifted along the thickness axis only where it faces that way (|cos|
 #: of its normal's angle to the axis above this): near a leading edge the move would be
 #: along the surface and would distort the triangles.
@@ -78,6 +83,14 @@ def surface_lift(geometry, mesh):
             points = f(points, corners, component, surface)
         return points
 
+    def both(points, corners, component, surface):
+        size = np.full(len(points), np.inf)
+        for f in lifts:
+            points, got = f.both(points, corners, component, surface)
+            size = np.minimum(size, got)
+        return points, size
+
+    lift.both = both
     return lift
 
 
@@ -94,23 +107,36 @@ def _polar(body, points, image):
 
 def _lifter(geometry, mesh, kind, move):
     """``lift(points, corners, component, surface)`` calling ``move(model, points, corners
-    (k, 3, 3), image, tol)`` for points on components of type ``kind`` (caps excluded), or
-    None when the geometry has none."""
+    (k, 3, 3), image, tol)`` (which returns the points and their sizes) for points on
+    components of type ``kind`` (caps excluded), or None when the geometry has none.
+
+    ``lift.both(points, corners, component, surface)``: (the lifted points, per point the
+    size of the exact surface it is lifted onto: a body's radius, a wing section's largest
+    thickness, inf where it is not lifted). A sag of a share of that size costs about that
+    share of the volume.
+    """
     models = _models(geometry, mesh, kind)
     if not models:
         return None
     vertices = np.asarray(mesh.vertices, float)
     tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
 
-    def lift(points, corners, component, surface):
+    def both(points, corners, component, surface, sized=True):
         name = mesh.surfaces[int(surface)]
         points = np.asarray(points, float)
+        size = np.full(len(points), np.inf)
         if not len(points) or name.endswith(" cap"):
-            return points
+            return points, size
         for model in models.get(int(component), ()):
-            points = move(model, points, vertices[corners], name.endswith(" image"), tol)
-        return points
+            points, got = move(model, points, vertices[corners], name.endswith(" image"), tol,
+                               sized)
+            size = np.minimum(size, got)
+        return points, size
 
+    def lift(points, corners, component, surface):
+        return both(points, corners, component, surface, sized=False)[0]
+
+    lift.both = both
     return lift
 
 
@@ -127,14 +153,14 @@ def body_lift(geometry, mesh):
     return _lifter(geometry, mesh, CircularBody, _onto_circle)
 
 
-def _onto_circle(body, points, corners, image, tol):
+def _onto_circle(body, points, corners, image, tol, sized=True):
     rho, radius, _, _ = _polar(body, corners.reshape(-1, 3), image)
     on = (np.abs(rho - radius) <= tol).reshape(-1, 3).all(axis=1)
     rho, radius, centre, unit = _polar(body, points, image)
     on &= (radius > 0) & (rho > 0) & (_radial(corners, unit) > FACING)
     out = points.copy()
     out[on, 1:] = centre[on] + radius[on, None] * unit[on]
-    return out
+    return out, np.where(on, radius, np.inf)
 
 
 def _chordwise(wing, p):
@@ -165,7 +191,7 @@ def wing_lift(geometry, mesh):
     return _lifter(geometry, mesh, WingLike, _onto_sections)
 
 
-def _onto_sections(wing, points, corners, image, tol):
+def _onto_sections(wing, points, corners, image, tol, sized=True):
     flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
     t = wing.thickness_axis
     corners = corners * flip
@@ -177,6 +203,24 @@ def _onto_sections(wing, points, corners, image, tol):
     p = points * flip
     up, low, inside = _thickness(wing, p)
     out = p.copy()
-    out[:, t] = np.where(on_up & ~on_low & inside, up, out[:, t])
-    out[:, t] = np.where(on_low & ~on_up & inside, low, out[:, t])
-    return out * flip
+    up_only, low_only = on_up & ~on_low & inside, on_low & ~on_up & inside
+    out[:, t] = np.where(up_only, up, out[:, t])
+    out[:, t] = np.where(low_only, low, out[:, t])
+    moved = up_only | low_only
+    size = np.full(len(p), np.inf)
+    if sized and moved.any():
+        size[moved] = _largest_thickness(wing, p[moved])
+    return out * flip, size
+
+
+def _largest_thickness(wing, p):
+    """The largest thickness of the wing's section at the points' span stations, at least
+    :data:`THIN` of its chord (a flat plate's camber line still has a size)."""
+    s, _, _ = _chordwise(wing, p)
+    f = np.linspace(0.0, 1.0, THICKNESS_SAMPLES)
+    ss, ff = np.repeat(s, f.size), np.tile(f, s.size)
+    t = wing.thickness_axis
+    up, low = wing.point(ss, ff, "upper"), wing.point(ss, ff, "lower")
+    gap = np.abs(up[:, t] - low[:, t]).reshape(s.size, f.size).max(axis=1)
+    chord = np.ptp(up[:, 0].reshape(s.size, f.size), axis=1)
+    return np.maximum(gap, THIN * chord)

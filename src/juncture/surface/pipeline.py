@@ -56,7 +56,7 @@ def _smaller(a, b, spans):
 
 
 def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
-         tolerance=1e-4):
+         tolerance=1e-4, curvature=None, depth=None):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`~juncture.surface.assemble.assemble` (both halves unless
@@ -67,8 +67,11 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     Then :func:`quality` (triangles of at least ``min_angle`` degrees where the corners
     allow, new points on the exact surfaces of circular bodies and wing-like components
     (:mod:`juncture.surface.lift`), at most ``tolerance`` times the airplane's size off
-    them, no larger than equilateral triangles of ``edge_length``; ``min_angle=0`` keeps the
-    networks' own triangles).
+    them, no larger than equilateral triangles of ``edge_length``, each edge turning by at
+    most ``curvature`` degrees of an exact surface and standing off it by at most ``depth``
+    times its size (a body's radius, a wing section's thickness; defaults
+    :data:`~juncture.surface.remesh.CURVATURE`, :data:`~juncture.surface.remesh.DEPTH`: the
+    volume converges as they shrink); ``min_angle=0`` keeps the networks' own triangles).
 
     Returns
     -------
@@ -85,7 +88,7 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
         from .lift import surface_lift
 
         surface, _ = quality(surface, min_angle, edge_length, tolerance, check,
-                             surface_lift(geometry, surface))
+                             surface_lift(geometry, surface), curvature, depth)
     return surface
 
 
@@ -107,7 +110,7 @@ def _refuse(geometry, surface, failures):
 
 
 def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True,
-            lift=None):
+            lift=None, curvature=None, depth=None):
     """(surface, report): ``surface`` re-triangulated by
     :func:`juncture.surface.remesh.remesh` and, with ``check``, its
     :func:`~juncture.surface.check.check_mesh` report.
@@ -118,21 +121,23 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     again (up to ``RETRIES`` times). Where it still fails, the surface as it was (report None),
     with a :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
     ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points on the exact
-    surfaces.
+    surfaces; ``curvature`` and ``depth`` (None: the defaults) size the triangles on them.
     """
     import warnings
 
     from ..errors import GeometryError, JunctureWarning
     from .check import check_mesh
-    from .remesh import remesh
+    from .remesh import CURVATURE, DEPTH, remesh
 
+    sizing = {"curvature": CURVATURE if curvature is None else curvature,
+              "depth": DEPTH if depth is None else depth}  # None: no such limit
     if surface.open_loops:
         return surface, None
     keep = set()
     for _ in range(RETRIES + 1):
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
-                            tolerance=tolerance, keep=keep, lift=lift)
+                            tolerance=tolerance, keep=keep, lift=lift, **sizing)
         except GeometryError as exc:
             failures = [str(exc)]
             break

@@ -8,9 +8,11 @@ constraints and every vertex it has is kept, so intersection and fillet points s
 vertices and the seams stay shared. In the chart a constrained Delaunay triangulation
 (PythonCDT) is refined until every triangle's smallest angle reaches ``min_angle`` (and,
 with ``edge_length``, its area that of an equilateral triangle of that edge); triangles that
-cut across a curved surface (centre more than ``tolerance`` off it, or the surface turning
-by more than ``turn`` under them) get their centre as a new point. New interior points are
-taken back onto the patch's triangles, which lie on juncture's networks.
+cut across a curved surface (centre more than ``tolerance`` off it, the surface turning
+by more than ``turn`` under them, or an edge cutting the exact surface by more than
+``curvature`` degrees or ``depth`` of its size) get their centre as a new point. New
+interior points are taken back onto the patch's triangles, which lie on juncture's networks,
+and lifted onto the exact surface where there is one (:mod:`juncture.surface.lift`).
 
 Refinement splits boundary edges that new points would encroach. A split point is made once,
 on the 3-D edge at the same fraction, and every patch that has the edge (the neighbour across
@@ -23,6 +25,7 @@ closed, by construction.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 
@@ -52,10 +55,28 @@ SLIVER = 1e-3
 #: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
 #: still cross).
 TAPER = 10.0
+#: Default largest turn [deg] of an exact surface under one new edge, measured by its
+#: midpoint's sag (:func:`_bent`): the inscribed polygon of a circle at this spacing holds
+#: sin(a) / a of its area (0.7 % short at 12 deg, 0.5 % at 10). None: no such limit (the
+#: networks' own spacing and ``tolerance`` decide; 10 deg takes the transport from 0.67 %
+#: to 0.60 % short of its model's volume at twice the triangles).
+CURVATURE = None
+#: Default largest sag of a new edge, share of the size of the exact surface under it
+#: (:func:`_bent`; a wing's PCHIP section between its ordinates): the enclosed volume is
+#: short by about twice this share. None: no such limit (it costs many triangles).
+DEPTH = None
+#: A sag below this share of the patch's size is not split for curvature (a nose's tip).
+FLOOR = 1e-6
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
 _NONE = (np.zeros(0), np.zeros(0, int))
 _SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
+
+
+class _Shape(NamedTuple):
+    turn: float          # cosine of the largest turn of the input triangles under one new
+    curvature: float | None   # largest turn of an exact surface under one new edge [rad]
+    depth: float | None       # largest sag of a new edge, share of the exact surface's size
 
 
 @dataclass(eq=False)
@@ -82,8 +103,10 @@ class _Splits:
     """The vertices, growing, and the points added on edges: one id per (edge, fraction),
     shared by every patch that has the edge."""
 
-    def __init__(self, vertices):
+    def __init__(self, vertices, move=None):
         self._xyz = np.array(vertices, float)
+        self.move = move                 # move(a, b, points): seam points onto the surface
+        self.pending = []                # (a, b, id) of split points not yet moved
         self.n = len(vertices)
         self.on = {}                     # (a, b) with a < b -> {t: id}, t from a
         self._sorted = {}                # (a, b) -> (fractions, ids), sorted, as last asked
@@ -108,6 +131,14 @@ class _Splits:
             pa, pb = self._xyz[a], self._xyz[b]
             got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
             self._sorted.pop((a, b), None)
+            self.pending.append((a, b, got[t]))
+
+    def settle(self):
+        """Move the split points made since the last call onto the surface (``move``)."""
+        if self.move is not None and self.pending:
+            a, b, ids = (np.array(c) for c in zip(*self.pending))
+            self._xyz[ids] = self.move(a, b, self._xyz[ids])
+        self.pending = []
 
     def along(self, a, b):
         """(fractions from a, ids) of the points on edge (a, b), in order from a."""
@@ -242,7 +273,7 @@ def _known(patch, splits):
                for i, j in patch.edges.tolist())
 
 
-def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
+def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
     """One constrained (and, with ``refine``, refined) triangulation of a patch's chart.
 
     New interior points are kept with the patch; new points on boundary pieces are
@@ -278,6 +309,7 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
     on_edge = _edge_points(tri, n, cons, parent, uv, pts)
     for gi, gj, t in on_edge.values():
         splits.split(gi, gj, t)
+    splits.settle()
     inner = np.setdiff1d(np.arange(n, len(pts)), np.fromiter(on_edge, int, len(on_edge)))
     gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     if len(inner):
@@ -289,7 +321,7 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
     local = tri.triangles_array()["vertices"].astype(np.int64) - _SUPER
     boundary = np.zeros(len(pts), bool)
     boundary[cons.ravel()] = True
-    far = _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary)
+    far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
     if len(far):
         patch.extra_uv.append(far)
         patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, far)[0]))
@@ -298,10 +330,11 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, turn):
     return True
 
 
-def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
+def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
     """Chart centroids of the triangles that cut across the patch's surface: the centroid
-    of the flat triangle more than ``tol`` off the surface, or the patch triangles under
-    its corners and centroid turning by more than ``turn`` (cosine); with ``tol`` None only
+    of the flat triangle more than ``tol`` off the surface, the patch triangles under
+    its corners and centroid turning by more than ``shape.turn`` (cosine), or, on an exact
+    surface, an edge cutting it too deep (:func:`_bent`); with ``tol`` None only
     the triangles with every corner on the boundary that leave the surface (at a narrow
     corner between two seams, the patch across them would make the same triangle); with
     ``tol`` False none."""
@@ -318,18 +351,54 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, turn, boundary):
         # triangles on the boundary: its straight seam edges are not lifted, splitting there
         # would not end
         lifted = np.linalg.norm(_lifted(patch, on, under) - flat, axis=1)
-        dev = np.where(boundary[local].any(axis=1), dev, lifted)
+        inner = ~boundary[local].any(axis=1)
+        dev = np.where(inner, lifted, dev)
+        bent = inner & _bent(patch, splits, vertices, pts, gid, local, shape)
+    else:
+        bent = np.zeros(len(local), bool)
     far = dev > tol
     n0 = patch.normals[under]
     for k in range(3):
         corner = pts[local[:, k]] + 1e-3 * (centre - pts[local[:, k]])  # inside, not on
         nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids], corner,
                                   patch.find)[1]]
-        far |= np.einsum("ij,ij->i", n0, nk) < turn
+        far |= np.einsum("ij,ij->i", n0, nk) < shape.turn
     # a triangle far smaller than the input triangle under it is not split again (at a
     # crease, where every triangle astride it turns, splitting would not end)
     small = _area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
-    return centre[(far & ~small) | across]
+    return centre[(far & ~small) | across | bent]
+
+
+def _bent(patch, splits, vertices, pts, gid, local, shape):
+    """(k,) bool: triangles with an edge that cuts the exact surface too deep. A chord of
+    length h on a curve of radius r stands s = h^2 / (8 r) off it at its middle and turns
+    by 8 s / h: an edge is too deep where that turn exceeds ``shape.curvature`` (radians),
+    or where s exceeds ``shape.depth`` times the size of the surface there (``lift.both``: a
+    body's radius, a wing section's largest thickness; the share of the volume the chords
+    cut off grows as s over that size). Sags below :data:`FLOOR` of the patch's size do not
+    count (a nose's tip)."""
+    both = getattr(patch.lift, "both", None)
+    ends = splits.all()[gid[local]]
+    out = np.zeros(len(local), bool)
+    if shape.curvature is None and shape.depth is None:
+        return out
+    angle, depth = shape.curvature, shape.depth
+    for k in range(3):
+        a, b = ends[:, k], ends[:, (k + 1) % 3]
+        mid = 0.5 * (pts[local[:, k]] + pts[local[:, (k + 1) % 3]])
+        on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
+        corners = patch.ids[patch.tri[under]]
+        if both is None:
+            lifted, size = patch.lift(on, corners, patch.component, patch.surface), np.inf
+        else:
+            lifted, size = both(on, corners, patch.component, patch.surface)
+        sag = np.linalg.norm(lifted - 0.5 * (a + b), axis=1)
+        h = np.linalg.norm(b - a, axis=1)
+        size = np.broadcast_to(size, h.shape)
+        turn = np.inf if angle is None else angle / 8.0 * h
+        most = np.inf if depth is None else depth * size
+        out |= ((sag > turn) | (sag > most)) & (sag > FLOOR * patch.size)
+    return out
 
 
 
@@ -406,7 +475,7 @@ def _fans(triangles, splits):
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
-           turn=TURN, keep=(), lift=None):
+           turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -419,12 +488,16 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     their triangles, taking their neighbours' seam points as fans. See the module docstring
     for how seams stay shared. ``lift(points, corners, component, surface)`` (e.g.
     :func:`juncture.surface.lift.body_lift`) moves new points from the triangle with vertex
-    ids ``corners`` onto the exact surface; seam points are never lifted.
+    ids ``corners`` onto the exact surface; a seam point only where both sides lift it to the
+    same place (a split within one body), never on an intersection line. On an exact surface
+    a new edge turns by at most ``curvature`` degrees and, with ``lift.both`` (the surface's
+    size at the points, :func:`juncture.surface.lift.surface_lift`), stands off it by at most
+    ``depth`` times that size (:func:`_bent`): the enclosed volume converges as both shrink.
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
 
-    splits = _Splits(np.asarray(mesh.vertices, float))
+    splits = _Splits(np.asarray(mesh.vertices, float), _seam_lift(mesh, lift))
     charted, kept = [], []
     for rows in _patches(mesh):
         patch = None if mesh.surface[rows[0]] in keep else _chart(mesh, rows)
@@ -433,6 +506,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         (charted if patch is not None else kept).append(patch if patch is not None else rows)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
+    shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
+                   np.radians(curvature), depth)
     for rnd in range(ROUNDS):
         # refine and split for shape; then only points inside (no seam points), the last
         # round taking what it gets
@@ -444,7 +519,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
                 continue
             area = _area(patch, mesh.vertices, edge_length)
             done = _triangulate(patch, splits, mesh.vertices, refine, min_angle, area, rule,
-                                np.cos(np.radians(turn)))
+                                shape)
             if done is None:
                 raise GeometryError(f"the chart of {mesh.surfaces[patch.surface]} could "
                                     "not be triangulated")
@@ -464,6 +539,43 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         surf.append(np.full(len(t), mesh.surface[rows[0]]))
     return SurfaceMesh(splits.all(), np.concatenate(tris), np.concatenate(comp),
                        np.concatenate(surf), mesh.components, mesh.surfaces, mesh.open_loops)
+
+
+def _seam_lift(mesh, lift):
+    """``move(a, b, points)`` for split points on the input edges (a, b): onto the exact
+    surface where both triangles on the edge lift a point to the same place (a split
+    between two blocks of one body: a straight edge between stations cuts the circle);
+    elsewhere (an intersection line, whose two sides would lift it apart) it stays on the
+    edge. None without ``lift``."""
+    if lift is None:
+        return None
+    tri = np.asarray(mesh.triangles)
+    n = len(mesh.vertices)
+    _, und, uses, inverse = patch_edges(tri)
+    rows = np.tile(np.arange(len(tri)), 3)
+    order = np.argsort(inverse, kind="stable")
+    first = np.searchsorted(inverse[order], np.arange(len(und)))
+    two = uses == 2                                    # the edge's two triangles
+    pair = np.stack([rows[order][first], rows[order][np.minimum(first + 1, len(rows) - 1)]],
+                    axis=1)
+    key = und[:, 0] * n + und[:, 1]
+
+    def move(a, b, points):
+        k = np.searchsorted(key, np.minimum(a, b) * n + np.maximum(a, b))
+        ok = two[k]
+        got = []
+        for side in (0, 1):
+            r = pair[k, side]
+            out = points.copy()
+            for comp, surf in set(zip(mesh.component[r[ok]].tolist(),
+                                      mesh.surface[r[ok]].tolist())):
+                sel = ok & (mesh.component[r] == comp) & (mesh.surface[r] == surf)
+                out[sel] = lift(points[sel], tri[r[sel]], comp, surf)
+            got.append(out)
+        same = ok & np.all(got[0] == got[1], axis=1)
+        return np.where(same[:, None], got[0], points)
+
+    return move
 
 
 def _area(patch, vertices, edge_length):
