@@ -81,12 +81,30 @@ def _buried_end(wing, inter, hosts):
     meets than of the tip section's, False for the reverse, None when it cannot tell (the
     same share, or a component without a signed distance)."""
     host = hosts.get(inter.name.split("/", 1)[1].rsplit(" ", 1)[0])
-    if host is None or not hasattr(host, "signed_distance"):
+    mean = 0.5 * (wing.section_points("upper") + wing.section_points("lower"))[[0, -1]]
+    if hasattr(host, "signed_distance"):
+        inside = host.signed_distance(mean) < 0.0
+    elif hasattr(host, "thickness_axis"):   # a fin or pylon whose tip is in a wing
+        inside = _inside_wing(host, mean.reshape(-1, 3)).reshape(mean.shape[:2])
+    else:
         return None
-    mean = 0.5 * (wing.section_points("upper") + wing.section_points("lower"))
-    inside = host.signed_distance(mean[[0, -1]]) < 0.0
     root, tip = inside.mean(axis=1)
     return None if root == tip else bool(root > tip)
+
+
+def _inside_wing(wing, p):
+    """(k,) bool: points between a wing-like component's lower and upper surfaces (at their
+    span station and chord fraction; the y >= 0 half)."""
+    a, t = wing.span_axis, wing.thickness_axis
+    lo, hi = wing.span_stations[0], wing.span_stations[-1]
+    s = np.clip(p[:, a], lo, hi)
+    le = wing.point(s, np.zeros_like(s), "upper")[:, 0]
+    te = wing.point(s, np.ones_like(s), "upper")[:, 0]
+    f = (p[:, 0] - le) / np.where(te > le, te - le, 1.0)
+    ok = (p[:, a] >= lo) & (p[:, a] <= hi) & (te > le) & (f >= 0.0) & (f <= 1.0)
+    f = np.clip(f, 0.0, 1.0)
+    up, low = wing.point(s, f, "upper")[:, t], wing.point(s, f, "lower")[:, t]
+    return ok & (p[:, t] > np.minimum(up, low)) & (p[:, t] < np.maximum(up, low))
 
 
 def _end_line(wing, side, inter, at_root, log):
