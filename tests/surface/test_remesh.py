@@ -251,3 +251,20 @@ def test_re_triangulating_any_closed_airplane_keeps_it_closed_and_oriented(drawn
     assert counts.open_edges == 0 and counts.misoriented_edges == 0
     assert np.array_equal(better.vertices[:len(assembled.vertices)], assembled.vertices)
     assert np.isin(np.unique(assembled.triangles), better.triangles).all()
+
+
+def test_a_closed_pod_is_re_triangulated_as_two_halves():
+    """A pod pointed at both ends has no boundary, so no chart: it is opened at the ring of
+    vertices nearest its middle, each half is charted (a disc), and the pod's triangles
+    reach good angles (the networks' own: a ring of 3.4 deg slivers at the tail)."""
+    from juncture.surface.remesh import _chart, _patches
+
+    geo = _geo(DATA / "generated" / "circular_body_unsymmetric_centre_fin.inp")
+    assembled = assemble(geo)
+    pod = assembled.surfaces.index("pod 1")
+    parts = [rows for rows in _patches(assembled) if assembled.surface[rows[0]] == pod]
+    assert len(parts) == 2 and all(_chart(assembled, rows) is not None for rows in parts)
+    surface = jc.mesh(geo)
+    mine = surface.surface == surface.surfaces.index("pod 1")
+    smallest = triangle_angles(surface.vertices, surface.triangles[mine]).min(axis=1)
+    assert smallest.min() > 5.0 and np.mean(smallest >= 20.0) > 0.97

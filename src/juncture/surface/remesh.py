@@ -173,8 +173,27 @@ def _patches(mesh):
         g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
                        shape=(len(t), len(t)))
         count, label = connected_components(g, directed=False)
-        out.extend(rows[label == k] for k in range(count))
+        for k in range(count):
+            out.extend(_opened(mesh, rows[label == k]))
     return out
+
+
+def _opened(mesh, rows):
+    """A closed part (a pod pointed at both ends: no boundary, so no disc to chart) as its
+    two halves on either side of the ring of vertices nearest its middle along its longest
+    axis; the ring's edges become a seam between them. Any other part as it is."""
+    t = mesh.triangles[rows]
+    _, _, uses, _ = patch_edges(t)
+    if len(rows) < 8 or np.any(uses != 2):
+        return [rows]
+    p = mesh.vertices[np.unique(t)]
+    axis = int(np.argmax(np.ptp(p, axis=0)))
+    c = mesh.vertices[:, axis]
+    ring = p[np.argmin(np.abs(p[:, axis] - np.median(p[:, axis]))), axis]
+    low = (c[t] <= ring).all(axis=1)
+    if low.all() or not low.any():
+        return [rows]
+    return [rows[low], rows[~low]]
 
 
 def _chart(mesh, rows):
