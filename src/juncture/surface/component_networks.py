@@ -95,16 +95,11 @@ def _buried_end(wing, inter, hosts):
 def _inside_wing(wing, p):
     """(k,) bool: points between a wing-like component's lower and upper surfaces (at their
     span station and chord fraction; the y >= 0 half)."""
-    a, t = wing.span_axis, wing.thickness_axis
-    lo, hi = wing.span_stations[0], wing.span_stations[-1]
-    s = np.clip(p[:, a], lo, hi)
-    le = wing.point(s, np.zeros_like(s), "upper")[:, 0]
-    te = wing.point(s, np.ones_like(s), "upper")[:, 0]
-    f = (p[:, 0] - le) / np.where(te > le, te - le, 1.0)
-    ok = (p[:, a] >= lo) & (p[:, a] <= hi) & (te > le) & (f >= 0.0) & (f <= 1.0)
-    f = np.clip(f, 0.0, 1.0)
-    up, low = wing.point(s, f, "upper")[:, t], wing.point(s, f, "lower")[:, t]
-    return ok & (p[:, t] > np.minimum(up, low)) & (p[:, t] < np.maximum(up, low))
+    from .lift import _thickness
+
+    up, low, inside = _thickness(wing, p)
+    t = p[:, wing.thickness_axis]
+    return inside & (t > np.minimum(up, low)) & (t < np.maximum(up, low))
 
 
 def _end_line(wing, side, inter, at_root, log):

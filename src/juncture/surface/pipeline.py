@@ -127,10 +127,9 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
 
     from ..errors import GeometryError, JunctureWarning
     from .check import check_mesh
-    from .remesh import CURVATURE, DEPTH, remesh
+    from .remesh import remesh
 
-    sizing = {"curvature": CURVATURE if curvature is None else curvature,
-              "depth": DEPTH if depth is None else depth}  # None: no such limit
+    sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
     if surface.open_loops:
         return surface, None
     keep = set()
