@@ -106,7 +106,7 @@ def survey_deck(job):
                 ref, _ = union_volume(geo.configuration)
                 rec["volume_error"] = surface.volume() / ref - 1.0
                 rec["volume_error_cells"] = surface.volume() / cells_volume(
-                    geo.configuration, n=201, cells=3000) - 1.0
+                    geo.configuration, n=121, cells=1500) - 1.0
         except _Timeout:
             rec.update(outcome="timeout", cls=f"> {TIMEOUT} s")
         except jc.JunctureError as exc:
