@@ -48,8 +48,12 @@ def _arbitrary(body, x, y, z, n=2001):
         return None
     half = body.point(np.full(n, x), np.linspace(0.0, 1.0, n))[:, 1:]
     ring = np.concatenate([half, half[::-1] * [-1.0, 1.0]])
-    grid = np.stack(np.meshgrid(y, z, indexing="ij"), -1).reshape(-1, 2)
-    return Path(ring).contains_points(grid).reshape(len(y), len(z))
+    out = np.zeros((len(y), len(z)), bool)
+    iy = slice(*np.searchsorted(y, [ring[:, 0].min(), ring[:, 0].max()]))
+    iz = slice(*np.searchsorted(z, [ring[:, 1].min(), ring[:, 1].max()]))
+    grid = np.stack(np.meshgrid(y[iy], z[iz], indexing="ij"), -1).reshape(-1, 2)
+    out[iy, iz] = Path(ring).contains_points(grid).reshape(len(y[iy]), len(z[iz]))
+    return out
 
 
 def _winglike(wing, x, y, z, sign):
