@@ -41,18 +41,22 @@ def _circular(body, x, y, z, sign):
 
 
 def _arbitrary(body, x, y, z, n=2001):
-    """An arbitrary (centre-line) body: both halves of its polyline section at x."""
-    from matplotlib.path import Path
-
+    """An arbitrary (centre-line) body: both halves of its polyline section at x, inside by
+    the even-odd rule along each y column (the polygon's z crossings below a cell)."""
     if not body.x_global[0] <= x <= body.x_global[-1]:
         return None
     half = body.point(np.full(n, x), np.linspace(0.0, 1.0, n))[:, 1:]
     ring = np.concatenate([half, half[::-1] * [-1.0, 1.0]])
+    a, b = ring, np.roll(ring, -1, axis=0)
     out = np.zeros((len(y), len(z)), bool)
-    iy = slice(*np.searchsorted(y, [ring[:, 0].min(), ring[:, 0].max()]))
-    iz = slice(*np.searchsorted(z, [ring[:, 1].min(), ring[:, 1].max()]))
-    grid = np.stack(np.meshgrid(y[iy], z[iz], indexing="ij"), -1).reshape(-1, 2)
-    out[iy, iz] = Path(ring).contains_points(grid).reshape(len(y[iy]), len(z[iz]))
+    cols = np.flatnonzero((y >= ring[:, 0].min()) & (y <= ring[:, 0].max()))
+    yc = y[cols][:, None]
+    spans = (a[:, 0] <= yc) != (b[:, 0] <= yc)            # edge crosses the column's line
+    dy = np.where(b[:, 0] != a[:, 0], b[:, 0] - a[:, 0], 1.0)
+    zc = np.where(spans, a[:, 1] + (yc - a[:, 0]) * (b[:, 1] - a[:, 1]) / dy, np.inf)
+    zc.sort(axis=1)
+    for row, col in zip(zc, cols):
+        out[col] = np.searchsorted(row, z) % 2 == 1
     return out
 
 
