@@ -47,10 +47,10 @@ def run(args, progress):
     """Complete, assemble, check; write only a mesh that is closed and oriented."""
 
     from ..completion import complete
+    from ..errors import GeometryError
     from ..surface.assemble import assemble
-    from ..surface.check import check_mesh
     from ..surface.lift import surface_lift
-    from ..surface.pipeline import quality
+    from ..surface.pipeline import finish
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration
@@ -62,7 +62,7 @@ def run(args, progress):
             setattr(args, dest, None)
     opts = _complete_options(args, fillet)
     _check_sizing(args, fail)
-    with progress(5, "mesh") as bar:
+    with progress(4, "mesh") as bar:
         bar.step("read and complete")
         cfg = read_configuration(args.deck, "mesh")
         geo = complete(cfg, fillet, args.keep_area, options=opts)
@@ -72,18 +72,19 @@ def run(args, progress):
         if not summary.closed or summary.open_loops:
             fail("the completed surface is not closed, so no mesh was written: "
                  + "; ".join(line[6:] for line in summary.lines() if line.startswith("FAIL")))
-        bar.step("check (exact predicates)")
-        report = check_mesh(mesh.vertices, mesh.triangles)
-        if not report.ok:
-            fail("the completed surface fails the checks of juncture check, so no mesh was "
-                 "written: " + "; ".join(report.failures()))
+        lift = None
         if args.min_angle:
-            bar.step(f"re-triangulate (smallest angle {args.min_angle:g} deg)")
-            better, checked = quality(mesh, args.min_angle, args.edge_length, args.tolerance,
-                                      lift=surface_lift(geo, mesh),
-                                      curvature=args.curvature, depth=args.depth)
-            if checked is not None:
-                mesh, report, summary = better, checked, summarize(better)
+            bar.step(f"re-triangulate (smallest angle {args.min_angle:g} deg) and check")
+            lift = surface_lift(geo, mesh)
+        else:
+            bar.step("check (exact predicates)")
+        try:
+            better, report = finish(geo, mesh, True, args.min_angle, args.edge_length,
+                                    args.tolerance, lift, args.curvature, args.depth)
+        except GeometryError as exc:
+            fail(f"{exc}, so no mesh was written")
+        if better is not mesh:
+            mesh, summary = better, summarize(better)
         bar.step("write " + " ".join(args.format))
         out = output_dir(args.output)
         written = [write_mesh(mesh, out / f"mesh.{ext}", ascii=args.ascii).name

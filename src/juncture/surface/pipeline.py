@@ -12,7 +12,7 @@ import numpy as np
 
 from .assemble import assemble
 
-__all__ = ["mesh", "quality", "overlapping_regions"]
+__all__ = ["mesh", "finish", "quality", "overlapping_regions"]
 
 
 def overlapping_regions(geometry):
@@ -79,17 +79,46 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
         ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
         ``wetted_area()``.
     """
-    from .check import check_mesh
-
     surface = assemble(geometry, mirror=mirror, cap=cap)
-    if check:
-        _refuse(geometry, surface, check_mesh(surface.vertices, surface.triangles).failures())
+    lift = None
     if min_angle:
         from .lift import surface_lift
 
-        surface, _ = quality(surface, min_angle, edge_length, tolerance, check,
-                             surface_lift(geometry, surface), curvature, depth)
-    return surface
+        lift = surface_lift(geometry, surface)
+    return finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
+                  curvature, depth)[0]
+
+
+def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
+           tolerance=1e-4, lift=None, curvature=None, depth=None):
+    """(surface, report): the assembled ``surface`` re-triangulated by :func:`quality` (with
+    ``min_angle``) and checked (with ``check``; report None without). The assembled surface
+    itself is checked only where the re-triangulation is not kept (a re-triangulation that
+    passes every check needs no second one): one that fails is refused
+    (:class:`~juncture.errors.GeometryError`, the cause first where known); one that passes
+    is returned with the :class:`~juncture.errors.JunctureWarning` of :func:`quality`."""
+    import warnings
+
+    from ..errors import JunctureWarning
+    from .check import check_mesh
+
+    failures = None
+    if min_angle:
+        better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance,
+                                             check, lift, curvature, depth)
+        if report is not None or (better is not surface and not check):
+            return better, report
+    report = None
+    if check:
+        report = check_mesh(surface.vertices, surface.triangles)
+        _refuse(geometry, surface, report.failures())
+    if failures:
+        warnings.warn(_NOT_KEPT + "; ".join(failures) + "): the networks' own triangles "
+                      "are used", JunctureWarning, stacklevel=3)
+    return surface, report
+
+
+_NOT_KEPT = "the re-triangulation for triangle quality was not kept ("
 
 
 def _refuse(geometry, surface, failures):
@@ -125,13 +154,26 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     """
     import warnings
 
-    from ..errors import GeometryError, JunctureWarning
+    from ..errors import JunctureWarning
+
+    better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance, check,
+                                         lift, curvature, depth)
+    if failures:
+        warnings.warn(_NOT_KEPT + "; ".join(failures) + "): the networks' own triangles "
+                      "are used", JunctureWarning, stacklevel=2)
+    return better, report
+
+
+def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature, depth):
+    """(surface, report, failures) of :func:`quality`, without its warning: failures None
+    where the re-triangulation was kept or the surface is open (returned as it is)."""
+    from ..errors import GeometryError
     from .check import check_mesh
     from .remesh import remesh
 
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
     if surface.open_loops:
-        return surface, None
+        return surface, None, None
     keep = set()
     for _ in range(RETRIES + 1):
         try:
@@ -141,19 +183,16 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
             failures = [str(exc)]
             break
         if not check:
-            return better, None
+            return better, None, None
         report = check_mesh(better.vertices, better.triangles)
         failures = report.failures()
         if not failures:
-            return better, report
+            return better, report, None
         more = _troubled_surfaces(better, report) - keep
         if not more:
             break
         keep |= more
-    warnings.warn("the re-triangulation for triangle quality was not kept ("
-                  + "; ".join(failures) + "): the networks' own triangles are used",
-                  JunctureWarning, stacklevel=3)
-    return surface, None
+    return surface, None, failures
 
 
 #: Re-triangulations after the first, each keeping the surfaces that crossed.
