@@ -89,21 +89,29 @@ def test_locate_is_barycentric_on_the_corners():
     assert (which >= 0).all()
 
 
+def _seam_vertices_kept(assembled, better):
+    """Asserts that every vertex on a seam (in triangles of two surfaces) is a vertex of the
+    re-triangulation; returns, per assembled vertex, whether it is (an inner vertex a
+    fiftieth of its patch's median edge from another is not)."""
+    used = np.unique(assembled.triangles)
+    kept = np.isin(used, better.triangles)
+    surfaces = np.zeros((len(assembled.vertices), len(assembled.surfaces)), bool)
+    surfaces[assembled.triangles.ravel(), np.repeat(assembled.surface, 3)] = True
+    assert kept[surfaces[used].sum(axis=1) > 1].all()
+    return kept
+
+
 def test_the_transport_keeps_every_vertex_closed_and_gets_good_angles(transport):
     assembled, better = transport
     n = len(assembled.vertices)
     assert np.array_equal(better.vertices[:n], assembled.vertices)      # bit for bit
-    assert np.isin(np.unique(assembled.triangles), better.triangles).all()
+    assert np.mean(_seam_vertices_kept(assembled, better)) > 0.99
     report = check_mesh(better.vertices, better.triangles)
     assert report.ok, report.failures()
     tm = trimesh.Trimesh(better.vertices, better.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     smallest = triangle_angles(better.vertices, better.triangles).min(axis=1)
-    # >= 5 deg is the aim; about ten triangles, where the wing root's leading edge wraps
-    # over the chart's flat facets and at the tips' thin trailing edges, stay between 2 and
-    # 5 deg (see README, "Triangle quality")
-    assert smallest.min() >= 2.0
-    assert np.mean(smallest >= 5.0) >= 0.999
+    assert smallest.min() >= 5.0
     assert np.mean(smallest >= 20.0) >= 0.97
     before = triangle_angles(assembled.vertices, assembled.triangles).min(axis=1)
     assert np.mean(before >= 20.0) < 0.5                                 # it was needed
@@ -143,10 +151,10 @@ def test_an_edge_length_bounds_the_triangles():
     h = 0.02 * np.ptp(assembled.vertices, axis=0).max()
     better = remesh(assembled, edge_length=h)
     assert check_mesh(better.vertices, better.triangles).ok
-    area = better.areas()
-    assert np.quantile(area, 0.99) <= 2.0 * np.sqrt(3) / 4 * h ** 2
+    equilateral = np.sqrt(3) / 4 * h ** 2
+    assert better.areas().max() <= 1.01 * equilateral
     coarse = remesh(assembled)
-    assert len(better.triangles) > len(coarse.triangles)
+    assert coarse.areas().max() > 2.0 * equilateral       # it was needed
 
 
 @pytest.mark.slow
@@ -250,7 +258,7 @@ def test_re_triangulating_any_closed_airplane_keeps_it_closed_and_oriented(drawn
     counts = summarize(better)
     assert counts.open_edges == 0 and counts.misoriented_edges == 0
     assert np.array_equal(better.vertices[:len(assembled.vertices)], assembled.vertices)
-    assert np.isin(np.unique(assembled.triangles), better.triangles).all()
+    _seam_vertices_kept(assembled, better)
 
 
 def test_a_closed_pod_is_re_triangulated_as_two_halves():

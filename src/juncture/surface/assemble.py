@@ -28,7 +28,7 @@ import numpy as np
 from .seams import split_seams
 
 __all__ = ["SurfaceMesh", "assemble", "boundary_loops", "simple_loops", "cap_polygon",
-           "strip_cap"]
+           "strip_cap", "strip_chains", "zip_strip"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -233,16 +233,27 @@ def _corners(p):
     return None
 
 
-def _zip_chains(pa, pb):
+def _zip_chains(pa, pb, angles=False):
     """Triangles (local: 'a' ids 0..n-1, 'b' ids n..n+m-1) of the strip between two polylines
     from a common start to a common end side: advance on the chain whose next diagonal is
-    shorter."""
+    shorter or, with ``angles``, whose next triangle has the larger smallest angle (never a
+    triangle on one straight side and its corner, where many points lie on one side)."""
     n, m = len(pa), len(pb)
     i = j = 0
     out = []
     while i < n - 1 or j < m - 1:
-        if j == m - 1 or (i < n - 1 and np.linalg.norm(pa[i + 1] - pb[j])
-                          <= np.linalg.norm(pa[i] - pb[j + 1])):
+        if j == m - 1:
+            on_a = True
+        elif i == n - 1:
+            on_a = False
+        elif angles:   # off a shared first corner onto both sides, onto the last from both
+            block_a = (j == 0 < i) or (i == n - 2 and j < m - 2)
+            block_b = (i == 0 < j) or (j == m - 2 and i < n - 2)
+            on_a = block_b if block_a != block_b else (
+                _smallest(pa[i], pa[i + 1], pb[j]) >= _smallest(pa[i], pb[j + 1], pb[j]))
+        else:
+            on_a = np.linalg.norm(pa[i + 1] - pb[j]) <= np.linalg.norm(pa[i] - pb[j + 1])
+        if on_a:
             out.append((i, i + 1, n + j))
             i += 1
         else:
@@ -251,16 +262,31 @@ def _zip_chains(pa, pb):
     return np.array(out, int)
 
 
+def _smallest(p, q, r):
+    """The smallest angle's sine-like measure of a triangle: twice its area over its longest
+    edge squared (0 when degenerate)."""
+    area = np.linalg.norm(np.cross(q - p, r - p))
+    longest = max(np.sum((q - p) ** 2), np.sum((r - q) ** 2), np.sum((p - r) ** 2))
+    return area / longest if longest > 0.0 else 0.0
+
+
 def strip_cap(vertices, loop):
     """Triangles of a ruled strip closing a thin loop (a blunt trailing edge between the
     upper and the lower surface's last lines), or None.
 
     The loop is split at the two vertices where it turns back most sharply into two chains
-    from one to the other; the strip between them is zipped (the shorter diagonal first). It
-    is taken only when every point of each chain lies within ``STRIP_SHARE`` of the loop's
-    length of the other chain's points. Oriented against the loop; triangles with a
-    repeated corner are dropped.
+    from one to the other (:func:`strip_chains`); the strip between them is zipped (the
+    shorter diagonal first, :func:`zip_strip`). Oriented against the loop.
     """
+    chains = strip_chains(vertices, loop)
+    return None if chains is None else zip_strip(vertices, *chains)
+
+
+def strip_chains(vertices, loop):
+    """(a, b): the two chains of a thin loop from one of the two vertices where it turns
+    back most sharply to the other, ``a`` along the loop and ``b`` against it, or None. Taken
+    only when every point of each chain lies within ``STRIP_SHARE`` of the loop's length of
+    the other chain's points."""
     k = len(loop)
     if k < 4:
         return None
@@ -276,9 +302,14 @@ def strip_cap(vertices, loop):
     gap = np.linalg.norm(vertices[a][:, None] - vertices[b][None, :], axis=2)
     if max(gap.min(1).max(), gap.min(0).max()) > STRIP_SHARE * length:
         return None
-    local = _zip_chains(vertices[a], vertices[b])
-    ids = np.concatenate([a, b])
-    tri = ids[local]
+    return a, b
+
+
+def zip_strip(vertices, a, b, angles=False):
+    """Triangles of the strip between the chains ``a`` (along a loop) and ``b`` (against
+    it) of :func:`strip_chains`, running against the loop (``angles``: see
+    :func:`_zip_chains`); triangles with a repeated corner are dropped."""
+    tri = np.concatenate([a, b])[_zip_chains(vertices[a], vertices[b], angles)]
     # The loop runs a_i -> a_i+1: the cap must use a_i+1 -> a_i, as (a_i+1, a_i, b_j) does.
     tri = tri[:, ::-1]
     ok = (tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 2] != tri[:, 0])

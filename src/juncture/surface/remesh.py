@@ -4,8 +4,9 @@ The assembled surface (:func:`juncture.surface.assemble.assemble`) uses the netw
 points: long, thin quads along the span and slivers where seams meet. Each patch (the
 connected part of one network or cap) is cut open into a disc where it is a tube and
 flattened conformally (:mod:`juncture.surface.chart`); its boundary edges become
-constraints and every vertex it has is kept, so intersection and fillet points stay
-vertices and the seams stay shared. In the chart a constrained Delaunay triangulation
+constraints and every vertex on it is kept, so intersection and fillet points stay
+vertices and the seams stay shared (so is every inner vertex but one a fiftieth of the
+median edge from another, :func:`_kept`). In the chart a constrained Delaunay triangulation
 (PythonCDT) is refined until every triangle's smallest angle reaches ``min_angle`` (and,
 with ``edge_length``, its area that of an equilateral triangle of that edge); triangles that
 cut across a curved surface (centre more than ``tolerance`` off it, the surface turning
@@ -13,6 +14,11 @@ by more than ``turn`` under them, or an edge cutting the exact surface by more t
 ``curvature`` degrees or ``depth`` of its size) get their centre as a new point. New
 interior points are taken back onto the patch's triangles, which lie on juncture's networks,
 and lifted onto the exact surface where there is one (:mod:`juncture.surface.lift`).
+
+A thin cap (a blunt trailing edge's strip) is not charted: its sides are split to a few
+times its width and it is zipped again at the end (:mod:`juncture.surface.strips`). Next to
+a boundary piece shorter than the chart's usual shortest edge (such a split side), refinement
+may go down to half that piece, so the surface beside it grades down instead of fanning.
 
 Refinement splits boundary edges that new points would encroach. A split point is made once,
 on the 3-D edge at the same fraction, and every patch that has the edge (the neighbour across
@@ -67,6 +73,13 @@ CURVATURE = None
 DEPTH = None
 #: A sag below this share of the patch's size is not split for curvature (a nose's tip).
 FLOOR = 1e-6
+#: ... but near a boundary piece shorter than it (a seam split to a thin strip's spacing),
+#: as short as this share of the shortest piece, down to this share of the median edge.
+PIECE = 0.5
+FINEST = 1e-3
+#: An inner vertex with an edge shorter than this share of its patch's median edge is not
+#: a vertex of the re-triangulation (:func:`_kept`).
+NEAR = 0.02
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
 _NONE = (np.zeros(0), np.zeros(0, int))
@@ -92,6 +105,7 @@ class _Patch:
     size: float = 0.0                    # the patch's extent
     find: object = None                  # the chart's point locator
     shortest: float = 0.0                # no edge shorter is made by refinement (chart)
+    kept: np.ndarray | None = None       # chart vertices triangulated (not NEAR others)
     extra_uv: list = field(default_factory=list)   # interior points added, chart coords
     extra_id: list = field(default_factory=list)
     seen: int = -1                       # split points known at the last triangulation
@@ -226,8 +240,23 @@ def _chart(mesh, rows):
         return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
                       int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
                       float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
-                      _shortest(uv, tri))
+                      _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges))
     return None
+
+
+def _kept(points, tri, edges):
+    """(n,) bool: the chart vertices a triangulation starts from. Every boundary vertex; an
+    inner one unless an edge of it is shorter than :data:`NEAR` times the patch's median
+    edge (two rows of a network a few thousandths apart, where two intersection lines nearly
+    share a station: kept, they leave a row of slivers that refinement cannot mend). New
+    points are still taken onto the patch's own triangles, so the surface is the same."""
+    e = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+    length = np.linalg.norm(points[e[:, 0]] - points[e[:, 1]], axis=1)
+    short = length < NEAR * np.median(length)
+    out = np.ones(len(points), bool)
+    out[e[short].ravel()] = False
+    out[edges.ravel()] = True
+    return out
 
 
 def _shortest(uv, tri):
@@ -267,12 +296,14 @@ def _inputs(patch, splits):
     """Chart points (originals, then split points, then interior points), their global ids,
     the constraint pieces (the boundary with its split points, chart ids) and, per piece,
     its original edge (global ids) and the fractions of its ends along it."""
-    uv, ids, cons, parent = [patch.uv], [patch.ids], [], []
-    n = len(patch.uv)
+    keep = np.flatnonzero(patch.kept)
+    where = np.cumsum(patch.kept) - 1
+    uv, ids, cons, parent = [patch.uv[keep]], [patch.ids[keep]], [], []
+    n = len(keep)
     for i, j in patch.edges.tolist():
         gi, gj = int(patch.ids[i]), int(patch.ids[j])
         t, sid = splits.along(gi, gj)
-        chain = [i, *range(n, n + len(t)), j]
+        chain = [int(where[i]), *range(n, n + len(t)), int(where[j])]
         frac = np.concatenate([[0.0], t, [1.0]])
         if len(t):
             uv.append(patch.uv[i] + t[:, None] * (patch.uv[j] - patch.uv[i]))
@@ -311,7 +342,9 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
         tri.insert_edges(cons)
         outer = tri.collect_outer_triangles_and_holes()
         if refine:
-            shortest = patch.shortest
+            piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
+            shortest = max(patch.shortest * FINEST / SHORTEST,
+                           min(patch.shortest, PIECE * float(piece)))
             budget = max(0, BUDGET * len(patch.uv) + 200 - sum(map(len, patch.extra_uv)))
             if area is not None:
                 tri.refine_triangles(budget, cdt.RefinementCriterion.LARGEST_AREA, area,
@@ -499,7 +532,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
 
-    Every vertex of ``mesh`` stays a vertex (intersection and fillet points included); new
+    Every vertex of ``mesh`` on a patch's boundary stays a vertex (intersection and fillet
+    points included), and every inner one but those :data:`NEAR` another (:func:`_kept`); new
     points lie on its triangles. A new triangle's centre lies within ``tolerance`` times the
     mesh's size of them, and the input triangles under its corners and centre turn by no
     more than ``turn`` degrees (so it spans no more of a curved body's facets than the
@@ -515,14 +549,10 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
+    from .strips import zipped
 
     splits = _Splits(np.asarray(mesh.vertices, float), _seam_lift(mesh, lift))
-    charted, kept = [], []
-    for rows in _patches(mesh):
-        patch = None if mesh.surface[rows[0]] in keep else _chart(mesh, rows)
-        if patch is not None:
-            patch.lift = lift
-        (charted if patch is not None else kept).append(patch if patch is not None else rows)
+    charted, kept, strips = _sorted_patches(mesh, keep, lift, splits)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
@@ -551,13 +581,37 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         tris.append(patch.out)
         comp.append(np.full(len(patch.out), patch.component))
         surf.append(np.full(len(patch.out), patch.surface))
-    for rows in kept:
-        t = _fans(mesh.triangles[rows], splits)
+    pieces = [(_fans(mesh.triangles[rows], splits), rows) for rows in kept]
+    pieces += [(zipped(thin, splits), thin.rows) for thin in strips]
+    for t, rows in pieces:
         tris.append(t)
         comp.append(np.full(len(t), mesh.component[rows[0]]))
         surf.append(np.full(len(t), mesh.surface[rows[0]]))
     return SurfaceMesh(splits.all(), np.concatenate(tris), np.concatenate(comp),
                        np.concatenate(surf), mesh.components, mesh.surfaces, mesh.open_loops)
+
+
+def _sorted_patches(mesh, keep, lift, splits):
+    """(charted patches, kept triangle rows, strips): a thin cap is a strip
+    (:mod:`juncture.surface.strips`, its sides split in ``splits`` now); a patch in ``keep``
+    or one that cannot be charted keeps its triangles."""
+    from .strips import presplit, strip
+
+    charted, kept, strips = [], [], []
+    for rows in _patches(mesh):
+        held = mesh.surface[rows[0]] in keep
+        thin = None if held else strip(mesh, rows)
+        if thin is not None:
+            strips.append(thin)
+            presplit(thin, mesh.vertices, splits)
+            continue
+        patch = None if held else _chart(mesh, rows)
+        if patch is None:
+            kept.append(rows)
+        else:
+            patch.lift = lift
+            charted.append(patch)
+    return charted, kept, strips
 
 
 def _seam_lift(mesh, lift):

@@ -1,0 +1,119 @@
+"""Thin strips in the re-triangulation: the cap of a blunt trailing edge.
+
+A blunt trailing edge is closed by a strip between the upper and the lower surface's last
+lines (:func:`juncture.surface.assemble.strip_cap`), often a hundredth of the chord wide and
+the whole span long. Refined in its own chart it needs triangles as small as its width, and
+where it pinches to nothing (a trailing edge that meets the fuselage at a point) the
+refinement runs on towards the corner and pushes ever shorter pieces onto the wing's seams;
+zipped as it is, its triangles are as thin as its width is short against the networks'
+spacing. So a strip is not charted: its long sides are split once, before the rounds, into
+pieces of at most :data:`SPACING` times its width there (shared with the wing surfaces
+across them, which refine to that spacing), and at the end it is zipped again over every
+point on its sides. A zipped triangle of width h and base b has a smallest angle of about
+atan(h / b): 9.5 deg at b = 6 h.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .assemble import boundary_loops, strip_chains, zip_strip
+
+__all__ = ["Strip", "strip", "presplit", "zipped", "STRIP", "SPACING", "MOST"]
+
+#: A cap patch is a strip when its area is below this share of a circle's of its boundary's
+#: length (a rectangle narrower than about STRIP / pi of its length).
+STRIP = 0.05
+#: A strip's sides are split into pieces of at most this many times its local width ...
+SPACING = 6.0
+#: ... but no finer than that times this share of its widest (where it pinches to a point
+#: no spacing helps the triangle at the corner), and each edge into at most :data:`MOST`.
+NARROWEST = 0.1
+MOST = 1000
+
+
+class Strip(NamedTuple):
+    rows: np.ndarray     # the patch's triangle rows
+    a: np.ndarray        # its two sides, corner to corner (vertex ids; see strip_chains)
+    b: np.ndarray
+    normal: np.ndarray   # the sum of its triangles' area vectors (its orientation)
+
+
+def _area_vectors(p):
+    return 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+
+
+def strip(mesh, rows):
+    """A :class:`Strip` of the triangles ``rows`` (one patch) where they are a thin cap
+    between two chains, else None."""
+    if not mesh.surfaces[mesh.surface[rows[0]]].endswith(" cap"):
+        return None
+    tri = mesh.triangles[rows]
+    loops = boundary_loops(tri)
+    if len(loops) != 1:
+        return None
+    v = mesh.vertices
+    area = _area_vectors(v[tri])
+    lp = loops[0]
+    length = np.linalg.norm(v[lp] - v[np.roll(lp, -1)], axis=1).sum()
+    if not 4.0 * np.pi * np.linalg.norm(area, axis=1).sum() < STRIP * length ** 2:
+        return None
+    chains = strip_chains(v, lp[::-1])     # as the loop of the hole it closes
+    return None if chains is None else Strip(rows, *chains, area.sum(axis=0))
+
+
+def _distance(points, chain):
+    """(k,) distances of points to the polyline ``chain`` (m, 3)."""
+    a, d = chain[:-1], chain[1:] - chain[:-1]
+    dd = np.maximum((d * d).sum(axis=1), 1e-300)
+    t = np.clip(((points[:, None] - a) * d).sum(axis=2) / dd, 0.0, 1.0)
+    return np.linalg.norm(points[:, None] - a - t[..., None] * d, axis=2).min(axis=1)
+
+
+def presplit(s, vertices, splits):
+    """Split each side's edges of the strip ``s`` (in ``splits``, shared with the surface
+    across) into pieces of at most :data:`SPACING` times the width where each starts
+    (:func:`_graded`)."""
+    for side, other in ((s.a, s.b), (s.b, s.a)):
+        p, q = vertices[side[:-1]], vertices[side[1:]]
+        w0, w1 = _distance(p, vertices[other]), _distance(q, vertices[other])
+        length = np.linalg.norm(q - p, axis=1)
+        for i, j, ln, a, b in zip(side[:-1].tolist(), side[1:].tolist(), length, w0, w1):
+            for t in _graded(ln, a, b):
+                splits.split(i, j, float(t))
+
+
+def _graded(length, w0, w1):
+    """Inner fractions of an edge of ``length`` whose strip is ``w0`` wide at its start and
+    ``w1`` at its end (linearly between): each piece at most :data:`SPACING` times the width
+    where it starts, marched from the narrow end; :data:`MOST` equal pieces where that takes
+    more."""
+    thin, wide = min(w0, w1), max(w0, w1)
+    if length <= SPACING * max(thin, NARROWEST * wide) or wide <= 0.0:
+        return np.zeros(0)
+    t = [0.0]
+    while t[-1] < 1.0 and len(t) <= MOST:
+        t.append(t[-1] + SPACING * max(thin + (wide - thin) * t[-1], NARROWEST * wide) / length)
+    if t[-1] < 1.0:
+        t = np.linspace(0.0, 1.0, MOST + 1)
+    t = np.asarray(t) / t[-1]
+    t = t[1:-1]
+    return t if w0 <= w1 else (1.0 - t)[::-1]
+
+
+def _with_points(side, splits):
+    out = [side[:1]]
+    for i, j in zip(side[:-1].tolist(), side[1:].tolist()):
+        out.extend([splits.along(i, j)[1], [j]])
+    return np.concatenate(out).astype(np.int64)
+
+
+def zipped(s, splits):
+    """The strip's triangles over every point now on its sides, oriented as it was."""
+    v = splits.all()
+    tri = zip_strip(v, _with_points(s.a, splits), _with_points(s.b, splits), angles=True)
+    if _area_vectors(v[tri]).sum(axis=0) @ s.normal < 0.0:
+        tri = tri[:, ::-1]
+    return tri

@@ -1,0 +1,98 @@
+"""Thin strips (a blunt trailing edge's cap) in the re-triangulation."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from juncture.surface.assemble import _zip_chains, zip_strip
+from juncture.surface.strips import MOST, NARROWEST, SPACING, _graded
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.floats(0.01, 100.0), st.floats(0.0, 1.0), st.floats(1e-4, 1.0))
+def test_graded_pieces_are_at_most_spacing_times_the_width_where_they_start(length, w0, w1):
+    """Every piece of the edge is no longer than SPACING times the strip's width at the
+    piece's narrow end (linear between the edge's ends; no narrower than NARROWEST of the
+    widest), unless the edge takes more than MOST pieces."""
+    t = np.concatenate([[0.0], _graded(length, w0, w1), [1.0]])
+    assert np.all(np.diff(t) > 0.0)
+    if len(t) - 1 >= MOST:
+        return
+    thin = np.minimum(w0 + (w1 - w0) * t[:-1], w0 + (w1 - w0) * t[1:])
+    most = SPACING * np.maximum(thin, NARROWEST * max(w0, w1)) / length
+    assert np.all(np.diff(t) <= most * (1.0 + 1e-9) + 1e-12)
+
+
+def test_graded_is_the_same_edge_from_either_end():
+    a = _graded(10.0, 0.05, 0.4)
+    b = _graded(10.0, 0.4, 0.05)
+    np.testing.assert_allclose(np.sort(1.0 - a), b, atol=1e-15)
+
+
+def _chains():
+    """Two sides of a strip 0.01 wide between shared corners at x = 0 and x = 1: side a has
+    ten points on its first straight piece, side b none."""
+    a = np.concatenate([[[0.0, 0.0, 0.0]], np.linspace([0.01, 0.0, 0.0], [0.1, 0.0, 0.0], 10),
+                        [[0.5, 0.0, 0.0], [1.0, 0.0, 0.0]]])
+    b = np.array([[0.0, 0.0, 0.0], [0.5, 0.01, 0.0], [1.0, 0.0, 0.0]])
+    return a, b
+
+
+def _areas(p, tri):
+    q = p[tri]
+    return 0.5 * np.linalg.norm(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]), axis=1)
+
+
+def test_the_diagonal_zip_fans_a_straight_side_from_its_corner():
+    """What the angle rule mends: zipped by the shorter diagonal, the points on a's first
+    piece are fanned from the shared corner, on one straight line (zero area)."""
+    a, b = _chains()
+    n, m = len(a), len(b)
+    local = _zip_chains(a, b)
+    both = [(0, n), (n - 1, n + m - 1)]                 # the shared corners' two ids
+    real = local[[not any(u in t and v in t for u, v in both) for t in local.tolist()]]
+    assert np.sum(_areas(np.concatenate([a, b]), real) == 0.0) >= 5
+
+
+def test_the_angle_zip_leaves_the_shared_corners_onto_both_sides():
+    """Zipped by angles, no triangle is flat and the strip is covered once: its triangles'
+    areas add up to the polygon's."""
+    a, b = _chains()
+    n = len(a)
+    vertices = np.concatenate([a, b[1:-1]])
+    ids_a = np.arange(n)
+    ids_b = np.concatenate([[0], n + np.arange(len(b) - 2), [n - 1]])
+    tri = zip_strip(vertices, ids_a, ids_b, angles=True)
+    areas = _areas(vertices, tri)
+    assert areas.min() > 0.0
+    assert areas.sum() == pytest.approx(0.5 * 1.0 * 0.01, rel=1e-12)   # the triangle a-b1-a
+
+
+def test_a_blunt_trailing_edge_is_zipped_and_the_wing_beside_it_keeps_good_angles():
+    """The generated airplane with a blunt trailing edge (tests/data/generated/README.md):
+    its strip's sides are split to a few times its width, so the wing surfaces beside it need
+    no slivers (183 triangles under 5 deg there before) and the strip's own triangles are
+    about atan(1 / SPACING) but where it pinches to the root."""
+    import warnings
+
+    import trimesh
+
+    import juncture as jc
+    from juncture.surface.quality import triangle_angles
+    from tests.support import DATA
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(DATA / "generated" / "arbitrary_body_blunt_trailing_edge.inp"))
+        surface = jc.mesh(geo)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
+    name = np.array(surface.surfaces)[surface.surface]
+    wing = np.isin(name, ["wing upper", "wing lower", "wing upper image", "wing lower image"])
+    assert smallest[wing].min() >= 5.0
+    cap = name == "wing cap"
+    assert np.mean(smallest[cap] >= 0.8 * np.degrees(np.arctan(1.0 / SPACING))) >= 0.9
