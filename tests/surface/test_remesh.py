@@ -80,6 +80,37 @@ def test_a_tube_is_cut_into_a_disc_and_unrolled():
                            np.linalg.norm(p3[a] - p3[b], axis=1), atol=1e-9)
 
 
+def test_a_tube_that_charts_as_an_annulus_is_cut_open():
+    """A pod open at both ends (a tube a circumference long) is a sphere with two holes:
+    flattened as it is, LSCM maps it conformally onto an annulus whose scale grows by
+    exp(2 pi L / C) along it, and new triangles straight in that chart are not in 3-D
+    (deck 38 of seed 2611: 1946 of a pod's triangles under 20 deg). It is cut into a disc."""
+    from juncture.surface.assemble import SurfaceMesh, boundary_loops
+    from juncture.surface.remesh import SPREAD, _chart, _spread
+
+    n, m = 31, 25
+
+    def f(u, v):
+        th = 2 * np.pi * v
+        return np.stack([2 * np.pi * u, np.cos(th), np.sin(th)], -1)
+    pts, tri = _grid(n, m, f)
+    seam = np.arange(n) * m + (m - 1)
+    tri = np.where(np.isin(tri, seam), tri - (m - 1), tri)
+    zeros = np.zeros(len(tri), int)
+    mesh = SurfaceMesh(pts, tri, zeros, zeros, ("pod",), ("pod",), ())
+    patch = _chart(mesh, np.arange(len(tri)))
+    assert len(boundary_loops(patch.tri)) == 1              # cut: one loop
+    p = pts[patch.ids][patch.tri]
+    double = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    assert _spread(patch.uv[patch.tri], double) < 1.01      # developable: unrolled
+    used, local = np.unique(tri, return_inverse=True)
+    local = local.reshape(tri.shape)
+    q = pts[used][local]
+    annulus = lscm(pts[used], local)                        # as it is: two loops
+    assert _spread(annulus[local], np.linalg.norm(np.cross(
+        q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]), axis=1)) > SPREAD
+
+
 def test_locate_is_barycentric_on_the_corners():
     pts, tri = _grid(3, 3, lambda u, v: np.stack([u, v, u * v], -1))
     uv = pts[:, :2]

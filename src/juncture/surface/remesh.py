@@ -77,6 +77,10 @@ FLOOR = 1e-6
 #: as short as this share of the shortest piece, down to this share of the median edge.
 PIECE = 0.5
 FINEST = 1e-3
+#: A chart with holes whose scale varies more than this (:func:`_spread`) is cut open into a
+#: disc instead (a tube, a pod open at both ends, maps conformally onto an annulus whose
+#: scale grows exponentially along it: new triangles, straight in the chart, are not in 3-D).
+SPREAD = 10.0
 #: An inner vertex with an edge shorter than this share of its patch's median edge is not
 #: a vertex of the re-triangulation (:func:`_kept`).
 NEAR = 0.02
@@ -212,36 +216,61 @@ def _opened(mesh, rows):
 
 def _chart(mesh, rows):
     """A :class:`_Patch` of the triangles ``rows``, or None if it cannot be charted: flat as
-    it is (holes stay holes), else cut open into a disc (a tube)."""
-    from .assemble import boundary_loops
-
+    it is (holes stay holes), else cut open into a disc (a tube, also where it charts as an
+    annulus whose scale varies more than :data:`SPREAD`)."""
     t = mesh.triangles[rows]
     used, local = np.unique(t, return_inverse=True)
     local = local.reshape(t.shape)
     if _sliver(mesh.vertices[used], local):
         return None
+    annulus = None
     for cut in (False, True):
         got = disc(local, len(used)) if cut else (local, np.arange(len(used)))
-        if got is None:
+        chart = None if got is None else _flattened(mesh, used, *got)
+        if chart is None:
             continue
-        tri, parent = got
-        ids = used[parent]
-        loops = boundary_loops(tri)
-        if not loops:
+        if not cut and len(chart[3]) > 1 and _spread(chart[2][chart[0]], chart[4]) > SPREAD:
+            annulus = chart           # a tube charted as an annulus: cut it open if it can be
             continue
-        uv = lscm(mesh.vertices[ids], tri)
-        edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
-        find = None if uv is None or not _embedded(uv, edges) else finder(uv, tri)
-        if find is None:
-            continue
-        p = mesh.vertices[ids][tri]
-        cross = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-        double = np.linalg.norm(cross, axis=1)
-        return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
-                      int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
-                      float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
-                      _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges))
-    return None
+        return _patch(mesh, rows, *chart)
+    return None if annulus is None else _patch(mesh, rows, *annulus)
+
+
+def _flattened(mesh, used, tri, parent):
+    """(tri, ids, uv, loops, twice the 3-D areas) of a chart of the local triangles ``tri``
+    over the vertices ``used[parent]``, or None (no boundary, folded or crossing itself)."""
+    from .assemble import boundary_loops
+
+    ids = used[parent]
+    loops = boundary_loops(tri)
+    if not loops:
+        return None
+    uv = lscm(mesh.vertices[ids], tri)
+    edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
+    if uv is None or not _embedded(uv, edges):
+        return None
+    p = mesh.vertices[ids][tri]
+    double = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    return tri, ids, uv, loops, double
+
+
+def _patch(mesh, rows, tri, ids, uv, loops, double):
+    p = mesh.vertices[ids][tri]
+    cross = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
+    return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
+                  int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
+                  float(np.ptp(p.reshape(-1, 3), axis=0).max()), finder(uv, tri),
+                  _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges))
+
+
+def _spread(flat, double):
+    """How much a chart's scale varies: the ratio of the 95th to the 5th percentile of its
+    triangles' chart area over their 3-D area (``double``: twice the 3-D areas)."""
+    e1, e2 = flat[:, 1] - flat[:, 0], flat[:, 2] - flat[:, 0]
+    ratio = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) / np.maximum(double, 1e-300)
+    lo, hi = np.quantile(ratio, [0.05, 0.95])
+    return hi / lo if lo > 0.0 else np.inf
 
 
 def _kept(points, tri, edges):
