@@ -84,6 +84,9 @@ SPREAD = 10.0
 #: An inner vertex with an edge shorter than this share of its patch's median edge is not
 #: a vertex of the re-triangulation (:func:`_kept`).
 NEAR = 0.02
+#: A triangle with a 3-D angle under this [deg] (:func:`_flat`) loses the vertex opposite
+#: its longest edge where refinement put it there (:func:`_drop_flat_apexes`).
+FLAT3D = 6.0
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
 _NONE = (np.zeros(0), np.zeros(0, int))
@@ -402,12 +405,49 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
     local = tri.triangles_array()["vertices"].astype(np.int64) - _SUPER
     boundary = np.zeros(len(pts), bool)
     boundary[cons.ravel()] = True
+    if not refine and _drop_flat_apexes(patch, splits, gid, local):
+        # no seam points are added now: triangulate again at once without them
+        return _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape)
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
     if len(far):
         patch.extra_uv.append(far)
         patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, far)[0]))
         return False
     patch.out = gid[local]
+    return True
+
+
+def _flat(p):
+    """(k,) bool: triangles (k, 3, 3) with an angle under :data:`FLAT3D`, and (k, 3) their
+    edge lengths (edge j: corner j to j + 1)."""
+    d = p[:, [1, 2, 0]] - p
+    e = np.linalg.norm(d, axis=2)
+    cos = -np.einsum("kij,kij->ki", d, d[:, [2, 0, 1]]) / np.maximum(
+        e * e[:, [2, 0, 1]], 1e-300)                          # at corner j: edges j, j - 1
+    return cos.max(axis=1) > np.cos(np.radians(FLAT3D)), e
+
+
+def _drop_flat_apexes(patch, splits, gid, local):
+    """In the rounds that add no seam points: drop the interior points (added by this
+    patch's refinement) opposite the longest edge of a triangle flat in 3-D (a seam point
+    that came late, lifted onto the surface beside a point put there before, or points
+    crowded where the chart stretches); True if any
+    was dropped (the patch is triangulated again without them, at once: each time one
+    point fewer)."""
+    if not patch.extra_id:
+        return False
+    flat, e = _flat(splits.all()[gid[local]])
+    if not flat.any():
+        return False
+    rows = np.flatnonzero(flat)
+    apex = local[rows, (np.argmax(e[rows], axis=1) + 2) % 3]   # opposite the longest edge
+    ids = np.concatenate(patch.extra_id)
+    drop = np.intersect1d(gid[apex], ids)
+    if not len(drop):
+        return False
+    keep = ~np.isin(ids, drop)
+    patch.extra_uv = [np.concatenate(patch.extra_uv)[keep]]
+    patch.extra_id = [ids[keep]]
     return True
 
 
