@@ -232,7 +232,8 @@ def _chart(mesh, rows):
         chart = None if got is None else _flattened(mesh, used, *got)
         if chart is None:
             continue
-        if not cut and len(chart[3]) > 1 and _spread(chart[2][chart[0]], chart[4]) > SPREAD:
+        tri, _, uv, _, cross, loops = chart
+        if not cut and loops > 1 and _spread(uv[tri], np.linalg.norm(cross, axis=1)) > SPREAD:
             annulus = chart           # a tube charted as an annulus: cut it open if it can be
             continue
         return _patch(mesh, rows, *chart)
@@ -240,8 +241,9 @@ def _chart(mesh, rows):
 
 
 def _flattened(mesh, used, tri, parent):
-    """(tri, ids, uv, loops, twice the 3-D areas) of a chart of the local triangles ``tri``
-    over the vertices ``used[parent]``, or None (no boundary, folded or crossing itself)."""
+    """(tri, ids, uv, boundary edges, area vectors (twice), number of boundary loops) of a
+    chart of the local triangles ``tri`` over the vertices ``used[parent]``, or None (no
+    boundary, folded or crossing itself)."""
     from .assemble import boundary_loops
 
     ids = used[parent]
@@ -253,14 +255,12 @@ def _flattened(mesh, used, tri, parent):
     if uv is None or not _embedded(uv, edges):
         return None
     p = mesh.vertices[ids][tri]
-    double = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
-    return tri, ids, uv, loops, double
+    return tri, ids, uv, edges, np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), len(loops)
 
 
-def _patch(mesh, rows, tri, ids, uv, loops, double):
+def _patch(mesh, rows, tri, ids, uv, edges, cross, _):
     p = mesh.vertices[ids][tri]
-    cross = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
+    double = np.linalg.norm(cross, axis=1)
     return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
                   int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
                   float(np.ptp(p.reshape(-1, 3), axis=0).max()), finder(uv, tri),
@@ -356,6 +356,17 @@ def _known(patch, splits):
 
 
 def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
+    """:func:`_triangulate_once`, again while it drops flat triangles' points."""
+    while True:
+        got = _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape)
+        if got is not _AGAIN:
+            return got
+
+
+_AGAIN = object()
+
+
+def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape):
     """One constrained (and, with ``refine``, refined) triangulation of a patch's chart.
 
     New interior points are kept with the patch; new points on boundary pieces are
@@ -406,8 +417,7 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
     boundary = np.zeros(len(pts), bool)
     boundary[cons.ravel()] = True
     if not refine and _drop_flat_apexes(patch, splits, gid, local):
-        # no seam points are added now: triangulate again at once without them
-        return _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape)
+        return _AGAIN        # no seam points are added now: triangulate again at once
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
     if len(far):
         patch.extra_uv.append(far)
@@ -431,9 +441,8 @@ def _drop_flat_apexes(patch, splits, gid, local):
     """In the rounds that add no seam points: drop the interior points (added by this
     patch's refinement) opposite the longest edge of a triangle flat in 3-D (a seam point
     that came late, lifted onto the surface beside a point put there before, or points
-    crowded where the chart stretches); True if any
-    was dropped (the patch is triangulated again without them, at once: each time one
-    point fewer)."""
+    crowded where the chart stretches); True if any was dropped (the patch is triangulated
+    again without them at once, each time with fewer points)."""
     if not patch.extra_id:
         return False
     flat, e = _flat(splits.all()[gid[local]])
