@@ -86,7 +86,7 @@ def test_a_tube_that_charts_as_an_annulus_is_cut_open():
     exp(2 pi L / C) along it, and new triangles straight in that chart are not in 3-D
     (deck 38 of seed 2611: 1946 of a pod's triangles under 20 deg). It is cut into a disc."""
     from juncture.surface.assemble import SurfaceMesh, boundary_loops
-    from juncture.surface.remesh import SPREAD, _chart, _spread
+    from juncture.surface.patches import SPREAD, chart, spread
 
     n, m = 31, 25
 
@@ -98,16 +98,16 @@ def test_a_tube_that_charts_as_an_annulus_is_cut_open():
     tri = np.where(np.isin(tri, seam), tri - (m - 1), tri)
     zeros = np.zeros(len(tri), int)
     mesh = SurfaceMesh(pts, tri, zeros, zeros, ("pod",), ("pod",), ())
-    patch = _chart(mesh, np.arange(len(tri)))
+    patch = chart(mesh, np.arange(len(tri)))
     assert len(boundary_loops(patch.tri)) == 1              # cut: one loop
     p = pts[patch.ids][patch.tri]
     double = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
-    assert _spread(patch.uv[patch.tri], double) < 1.01      # developable: unrolled
+    assert spread(patch.uv[patch.tri], double) < 1.01      # developable: unrolled
     used, local = np.unique(tri, return_inverse=True)
     local = local.reshape(tri.shape)
     q = pts[used][local]
     annulus = lscm(pts[used], local)                        # as it is: two loops
-    assert _spread(annulus[local], np.linalg.norm(np.cross(
+    assert spread(annulus[local], np.linalg.norm(np.cross(
         q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]), axis=1)) > SPREAD
 
 
@@ -306,13 +306,13 @@ def test_a_closed_pod_is_re_triangulated_as_two_halves():
     """A pod pointed at both ends has no boundary, so no chart: it is opened at the ring of
     vertices nearest its middle, each half is charted (a disc), and the pod's triangles
     reach good angles (the networks' own: a ring of 3.4 deg slivers at the tail)."""
-    from juncture.surface.remesh import _chart, _patches
+    from juncture.surface.patches import chart, patches
 
     geo = _geo(DATA / "generated" / "circular_body_unsymmetric_centre_fin.inp")
     assembled = assemble(geo)
     pod = assembled.surfaces.index("pod 1")
-    parts = [rows for rows in _patches(assembled) if assembled.surface[rows[0]] == pod]
-    assert len(parts) == 2 and all(_chart(assembled, rows) is not None for rows in parts)
+    parts = [rows for rows in patches(assembled) if assembled.surface[rows[0]] == pod]
+    assert len(parts) == 2 and all(chart(assembled, rows) is not None for rows in parts)
     surface = jc.mesh(geo)
     mine = surface.surface == surface.surfaces.index("pod 1")
     smallest = triangle_angles(surface.vertices, surface.triangles[mine]).min(axis=1)

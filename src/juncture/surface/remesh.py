@@ -6,7 +6,8 @@ connected part of one network or cap) is cut open into a disc where it is a tube
 flattened conformally (:mod:`juncture.surface.chart`); its boundary edges become
 constraints and every vertex on it is kept, so intersection and fillet points stay
 vertices and the seams stay shared (so is every inner vertex but one a fiftieth of the
-median edge from another, :func:`_kept`). In the chart a constrained Delaunay triangulation
+median edge from another: :mod:`juncture.surface.patches`; seam points:
+:mod:`juncture.surface.splits`). In the chart a constrained Delaunay triangulation
 (PythonCDT) is refined until every triangle's smallest angle reaches ``min_angle`` (and,
 with ``edge_length``, its area that of an equilateral triangle of that edge); triangles that
 cut across a curved surface (centre more than ``tolerance`` off it, the surface turning
@@ -30,12 +31,13 @@ closed, by construction.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import NamedTuple
 
 import numpy as np
 
-from .chart import disc, finder, locate, lscm, patch_edges
+from .chart import locate
+from .patches import SHORTEST, SUPER, area3, chart, patches
+from .splits import Splits, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 
@@ -52,11 +54,6 @@ TURN = 12.0
 BUDGET = 30
 #: A triangle smaller than this share of the input triangle under it is not split again.
 SMALL = 0.05
-#: Refinement makes no edge shorter than this share of a chart's median edge.
-SHORTEST = 0.02
-#: A patch whose area is below this share of a circle's of its boundary's length is a
-#: sliver: it keeps its triangles.
-SLIVER = 1e-3
 #: A new point lifted onto the exact surface moves at most 1 / TAPER of its distance from
 #: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
 #: still cross).
@@ -73,255 +70,20 @@ CURVATURE = None
 DEPTH = None
 #: A sag below this share of the patch's size is not split for curvature (a nose's tip).
 FLOOR = 1e-6
-#: ... but near a boundary piece shorter than it (a seam split to a thin strip's spacing),
-#: as short as this share of the shortest piece, down to this share of the median edge.
+#: Refinement makes no edge shorter than a chart's SHORTEST share of its median edge, or
+#: PIECE times its shortest boundary piece (a seam split to a thin strip's spacing) where
+#: that is shorter, down to FINEST times its median edge.
 PIECE = 0.5
 FINEST = 1e-3
-#: A chart with holes whose scale varies more than this (:func:`_spread`) is cut open into a
-#: disc instead (a tube, a pod open at both ends, maps conformally onto an annulus whose
-#: scale grows exponentially along it: new triangles, straight in the chart, are not in 3-D).
-SPREAD = 10.0
-#: An inner vertex with an edge shorter than this share of its patch's median edge is not
-#: a vertex of the re-triangulation (:func:`_kept`).
-NEAR = 0.02
 #: A triangle with a 3-D angle under this [deg] (:func:`_flat`) loses the vertex opposite
 #: its longest edge where refinement put it there (:func:`_drop_flat_apexes`).
 FLAT3D = 6.0
-#: Split points closer than this fraction of their edge are one point.
-SAME_T = 1e-6
-_NONE = (np.zeros(0), np.zeros(0, int))
-_SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
 
 
 class _Shape(NamedTuple):
     turn: float          # cosine of the largest turn of the input triangles under one new
     curvature: float | None   # largest turn of an exact surface under one new edge [rad]
     depth: float | None       # largest sag of a new edge, share of the exact surface's size
-
-
-@dataclass(eq=False)
-class _Patch:
-    ids: np.ndarray                      # global vertex id of every chart vertex
-    tri: np.ndarray                      # chart triangles (local ids)
-    uv: np.ndarray                       # chart coordinates
-    edges: np.ndarray                    # boundary edges (local ids), in the loop's order
-    component: int
-    surface: int
-    normals: np.ndarray | None = None    # unit normals of the chart triangles (3-D)
-    areas: np.ndarray | None = None      # 3-D areas of the chart triangles
-    size: float = 0.0                    # the patch's extent
-    find: object = None                  # the chart's point locator
-    shortest: float = 0.0                # no edge shorter is made by refinement (chart)
-    kept: np.ndarray | None = None       # chart vertices triangulated (not NEAR others)
-    extra_uv: list = field(default_factory=list)   # interior points added, chart coords
-    extra_id: list = field(default_factory=list)
-    seen: int = -1                       # split points known at the last triangulation
-    out: np.ndarray | None = None        # current triangles (global ids)
-    lift: object = None                  # lift(points, corners, component, surface)
-
-
-class _Splits:
-    """The vertices, growing, and the points added on edges: one id per (edge, fraction),
-    shared by every patch that has the edge."""
-
-    def __init__(self, vertices, move=None):
-        self._xyz = np.array(vertices, float)
-        self.move = move                 # move(a, b, points): seam points onto the surface
-        self.pending = []                # (a, b, id) of split points not yet moved
-        self.n = len(vertices)
-        self.on = {}                     # (a, b) with a < b -> {t: id}, t from a
-        self._sorted = {}                # (a, b) -> (fractions, ids), sorted, as last asked
-
-    def add_vertex(self, p):
-        p = np.atleast_2d(p)
-        if self.n + len(p) > len(self._xyz):
-            grown = np.empty((2 * (self.n + len(p)), 3))
-            grown[:self.n] = self._xyz[:self.n]
-            self._xyz = grown
-        ids = np.arange(self.n, self.n + len(p))
-        self._xyz[ids] = p
-        self.n += len(p)
-        return ids
-
-    def split(self, a, b, t):
-        if a > b:
-            a, b, t = b, a, 1.0 - t
-        got = self.on.setdefault((a, b), {})
-        # Two patches that split one edge at its middle find fractions a few ulps apart.
-        if not any(abs(t - x) < SAME_T for x in got):
-            pa, pb = self._xyz[a], self._xyz[b]
-            got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
-            self._sorted.pop((a, b), None)
-            self.pending.append((a, b, got[t]))
-
-    def settle(self):
-        """Move the split points made since the last call onto the surface (``move``)."""
-        if self.move is not None and self.pending:
-            a, b, ids = (np.array(c) for c in zip(*self.pending))
-            self._xyz[ids] = self.move(a, b, self._xyz[ids])
-        self.pending = []
-
-    def along(self, a, b):
-        """(fractions from a, ids) of the points on edge (a, b), in order from a."""
-        key = (a, b) if a < b else (b, a)
-        if key not in self.on:
-            return _NONE
-        if key not in self._sorted:
-            got = self.on[key]
-            t = np.array(sorted(got))
-            self._sorted[key] = (t, np.array([got[x] for x in t]))
-        t, ids = self._sorted[key]
-        return (t, ids) if a < b else (1.0 - t[::-1], ids[::-1])
-
-    def all(self):
-        return self._xyz[:self.n]
-
-
-def _patches(mesh):
-    """Connected parts of every surface id, as (global triangle rows)."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
-    out = []
-    for s in np.unique(mesh.surface):
-        rows = np.flatnonzero(mesh.surface == s)
-        t = mesh.triangles[rows]
-        _, und, uses, inverse = patch_edges(t)
-        owner = np.tile(np.arange(len(t)), 3)
-        order = np.argsort(inverse, kind="stable")
-        inv, own = inverse[order], owner[order]
-        same = inv[1:] == inv[:-1]
-        g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
-                       shape=(len(t), len(t)))
-        count, label = connected_components(g, directed=False)
-        for k in range(count):
-            out.extend(_opened(mesh, rows[label == k]))
-    return out
-
-
-def _opened(mesh, rows):
-    """A closed part (a pod pointed at both ends: no boundary, so no disc to chart) as its
-    two halves on either side of the ring of vertices nearest its middle along its longest
-    axis; the ring's edges become a seam between them. Any other part as it is."""
-    t = mesh.triangles[rows]
-    _, _, uses, _ = patch_edges(t)
-    if len(rows) < 8 or np.any(uses != 2):
-        return [rows]
-    p = mesh.vertices[np.unique(t)]
-    axis = int(np.argmax(np.ptp(p, axis=0)))
-    c = mesh.vertices[:, axis]
-    ring = p[np.argmin(np.abs(p[:, axis] - np.median(p[:, axis]))), axis]
-    low = (c[t] <= ring).all(axis=1)
-    if low.all() or not low.any():
-        return [rows]
-    return [rows[low], rows[~low]]
-
-
-def _chart(mesh, rows):
-    """A :class:`_Patch` of the triangles ``rows``, or None if it cannot be charted: flat as
-    it is (holes stay holes), else cut open into a disc (a tube, also where it charts as an
-    annulus whose scale varies more than :data:`SPREAD`)."""
-    t = mesh.triangles[rows]
-    used, local = np.unique(t, return_inverse=True)
-    local = local.reshape(t.shape)
-    if _sliver(mesh.vertices[used], local):
-        return None
-    annulus = None
-    for cut in (False, True):
-        got = disc(local, len(used)) if cut else (local, np.arange(len(used)))
-        chart = None if got is None else _flattened(mesh, used, *got)
-        if chart is None:
-            continue
-        tri, _, uv, _, cross, loops = chart
-        if not cut and loops > 1 and _spread(uv[tri], np.linalg.norm(cross, axis=1)) > SPREAD:
-            annulus = chart           # a tube charted as an annulus: cut it open if it can be
-            continue
-        return _patch(mesh, rows, *chart)
-    return None if annulus is None else _patch(mesh, rows, *annulus)
-
-
-def _flattened(mesh, used, tri, parent):
-    """(tri, ids, uv, boundary edges, area vectors (twice), number of boundary loops) of a
-    chart of the local triangles ``tri`` over the vertices ``used[parent]``, or None (no
-    boundary, folded or crossing itself)."""
-    from .assemble import boundary_loops
-
-    ids = used[parent]
-    loops = boundary_loops(tri)
-    if not loops:
-        return None
-    uv = lscm(mesh.vertices[ids], tri)
-    edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
-    if uv is None or not _embedded(uv, edges):
-        return None
-    p = mesh.vertices[ids][tri]
-    return tri, ids, uv, edges, np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), len(loops)
-
-
-def _patch(mesh, rows, tri, ids, uv, edges, cross, _):
-    p = mesh.vertices[ids][tri]
-    double = np.linalg.norm(cross, axis=1)
-    return _Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
-                  int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
-                  float(np.ptp(p.reshape(-1, 3), axis=0).max()), finder(uv, tri),
-                  _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges))
-
-
-def _spread(flat, double):
-    """How much a chart's scale varies: the ratio of the 95th to the 5th percentile of its
-    triangles' chart area over their 3-D area (``double``: twice the 3-D areas)."""
-    e1, e2 = flat[:, 1] - flat[:, 0], flat[:, 2] - flat[:, 0]
-    ratio = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) / np.maximum(double, 1e-300)
-    lo, hi = np.quantile(ratio, [0.05, 0.95])
-    return hi / lo if lo > 0.0 else np.inf
-
-
-def _kept(points, tri, edges):
-    """(n,) bool: the chart vertices a triangulation starts from. Every boundary vertex; an
-    inner one unless an edge of it is shorter than :data:`NEAR` times the patch's median
-    edge (two rows of a network a few thousandths apart, where two intersection lines nearly
-    share a station: kept, they leave a row of slivers that refinement cannot mend). New
-    points are still taken onto the patch's own triangles, so the surface is the same."""
-    e = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
-    length = np.linalg.norm(points[e[:, 0]] - points[e[:, 1]], axis=1)
-    short = length < NEAR * np.median(length)
-    out = np.ones(len(points), bool)
-    out[e[short].ravel()] = False
-    out[edges.ravel()] = True
-    return out
-
-
-def _shortest(uv, tri):
-    """The shortest edge refinement may make in a chart: a share ``SHORTEST`` of its median
-    edge. Near a corner of tiny angle (a thin trailing edge's wedge) refinement stops there
-    instead of grading down without end (and using up the points the rest needs)."""
-    e = np.linalg.norm(uv[tri] - uv[np.roll(tri, 1, axis=1)], axis=2)
-    return SHORTEST * float(np.median(e[e > 0]))
-
-
-def _sliver(points, tri):
-    """Whether a patch is a sliver (a cap closing a slit): its area below ``SLIVER`` times
-    that of a circle of its boundary's length; there is nothing to refine in it."""
-    from .assemble import boundary_loops
-
-    area = _area3(points[tri]).sum()
-    length = sum(np.linalg.norm(points[lp] - points[np.roll(lp, -1)], axis=1).sum()
-                 for lp in boundary_loops(tri))
-    return length > 0 and 4.0 * np.pi * area < SLIVER * length ** 2
-
-
-def _embedded(uv, edges):
-    """Whether the chart's boundary edges cross nowhere (PythonCDT takes them all)."""
-    import pythoncdt as cdt
-
-    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
-                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
-    try:
-        tri.insert_vertices(np.ascontiguousarray(uv))
-        tri.insert_edges(np.asarray(edges, np.uint32))
-    except (RuntimeError, ValueError):
-        return False
-    return tri.vertices_count() - _SUPER == len(uv)
 
 
 def _inputs(patch, splits):
@@ -397,10 +159,10 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         tri.remove_triangles(outer)
     except (RuntimeError, ValueError):
         return None
-    if tri.vertices_count() - _SUPER < n:
+    if tri.vertices_count() - SUPER < n:
         return None
     pts = tri.vertices_array()
-    pts = np.stack([pts["x"], pts["y"]], 1)[_SUPER:]
+    pts = np.stack([pts["x"], pts["y"]], 1)[SUPER:]
     on_edge = _edge_points(tri, n, cons, parent, uv, pts)
     for gi, gj, t in on_edge.values():
         splits.split(gi, gj, t)
@@ -413,7 +175,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         patch.extra_id.append(gid[inner])
     if on_edge:
         return False
-    local = tri.triangles_array()["vertices"].astype(np.int64) - _SUPER
+    local = tri.triangles_array()["vertices"].astype(np.int64) - SUPER
     boundary = np.zeros(len(pts), bool)
     boundary[cons.ravel()] = True
     if not refine and _drop_flat_apexes(patch, splits, gid, local):
@@ -495,7 +257,7 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
         far |= np.einsum("ij,ij->i", n0, nk) < shape.turn
     # a triangle far smaller than the input triangle under it is not split again (at a
     # crease, where every triangle astride it turns, splitting would not end)
-    small = _area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
+    small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
     return centre[(far & ~small) | across | bent]
 
 
@@ -559,10 +321,6 @@ def _on_surface(patch, vertices, query):
     return (xyz if patch.lift is None else _lifted(patch, xyz, under, query)), under
 
 
-def _area3(p):
-    return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
-
-
 def _edge_points(tri, n, cons, parent, uv, pts):
     """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
     put on constraint pieces, each on the piece's original edge."""
@@ -571,11 +329,11 @@ def _edge_points(tri, n, cons, parent, uv, pts):
         piece[(a, b)] = piece[(b, a)] = k
     out = {}
     for sub, originals in tri.piece_to_originals_iter():
-        for v in (sub.v1 - _SUPER, sub.v2 - _SUPER):
+        for v in (sub.v1 - SUPER, sub.v2 - SUPER):
             if v < n or v in out:
                 continue
             e = originals[0]
-            a, b = e.v1 - _SUPER, e.v2 - _SUPER
+            a, b = e.v1 - SUPER, e.v2 - SUPER
             k = piece[(a, b)]
             a, b = (int(x) for x in cons[k])
             d = uv[b] - uv[a]
@@ -585,25 +343,6 @@ def _edge_points(tri, n, cons, parent, uv, pts):
     return out
 
 
-def _fans(triangles, splits):
-    """Triangles (global ids) of a patch that keeps its own ``triangles``, with the split
-    points on their edges taken in: a triangle with points on an edge becomes the fan from
-    the opposite corner over them, and each piece again while it has points on an edge."""
-    out, todo = [], [tuple(t) for t in np.asarray(triangles).tolist()]
-    while todo:
-        t = todo.pop()
-        for k in range(3):
-            a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
-            ids = splits.along(a, b)[1].tolist()
-            if ids:
-                chain = [a, *ids, b]
-                todo.extend((p, q, c) for p, q in zip(chain[:-1], chain[1:]))
-                break
-        else:
-            out.append(t)
-    return np.array(out, np.int64).reshape(-1, 3)
-
-
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
            turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
@@ -611,7 +350,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
 
     Every vertex of ``mesh`` on a patch's boundary stays a vertex (intersection and fillet
-    points included), and every inner one but those :data:`NEAR` another (:func:`_kept`); new
+    points included), and every inner one but those
+    :data:`~juncture.surface.patches.NEAR` another; new
     points lie on its triangles. A new triangle's centre lies within ``tolerance`` times the
     mesh's size of them, and the input triangles under its corners and centre turn by no
     more than ``turn`` degrees (so it spans no more of a curved body's facets than the
@@ -629,7 +369,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     from .assemble import SurfaceMesh
     from .strips import zipped
 
-    splits = _Splits(np.asarray(mesh.vertices, float), _seam_lift(mesh, lift))
+    splits = Splits(np.asarray(mesh.vertices, float), seam_lift(mesh, lift))
     charted, kept, strips = _sorted_patches(mesh, keep, lift, splits)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
@@ -659,7 +399,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         tris.append(patch.out)
         comp.append(np.full(len(patch.out), patch.component))
         surf.append(np.full(len(patch.out), patch.surface))
-    pieces = [(_fans(mesh.triangles[rows], splits), rows) for rows in kept]
+    pieces = [(fans(mesh.triangles[rows], splits), rows) for rows in kept]
     pieces += [(zipped(thin, splits), thin.rows) for thin in strips]
     for t, rows in pieces:
         tris.append(t)
@@ -676,57 +416,20 @@ def _sorted_patches(mesh, keep, lift, splits):
     from .strips import presplit, strip
 
     charted, kept, strips = [], [], []
-    for rows in _patches(mesh):
+    for rows in patches(mesh):
         held = mesh.surface[rows[0]] in keep
         thin = None if held else strip(mesh, rows)
         if thin is not None:
             strips.append(thin)
             presplit(thin, mesh.vertices, splits)
             continue
-        patch = None if held else _chart(mesh, rows)
+        patch = None if held else chart(mesh, rows)
         if patch is None:
             kept.append(rows)
         else:
             patch.lift = lift
             charted.append(patch)
     return charted, kept, strips
-
-
-def _seam_lift(mesh, lift):
-    """``move(a, b, points)`` for split points on the input edges (a, b): onto the exact
-    surface where both triangles on the edge lift a point to the same place (a split
-    between two blocks of one body: a straight edge between stations cuts the circle);
-    elsewhere (an intersection line, whose two sides would lift it apart) it stays on the
-    edge. None without ``lift``."""
-    if lift is None:
-        return None
-    tri = np.asarray(mesh.triangles)
-    n = len(mesh.vertices)
-    _, und, uses, inverse = patch_edges(tri)
-    rows = np.tile(np.arange(len(tri)), 3)
-    order = np.argsort(inverse, kind="stable")
-    first = np.searchsorted(inverse[order], np.arange(len(und)))
-    two = uses == 2                                    # the edge's two triangles
-    pair = np.stack([rows[order][first], rows[order][np.minimum(first + 1, len(rows) - 1)]],
-                    axis=1)
-    key = und[:, 0] * n + und[:, 1]
-
-    def move(a, b, points):
-        k = np.searchsorted(key, np.minimum(a, b) * n + np.maximum(a, b))
-        ok = two[k]
-        got = []
-        for side in (0, 1):
-            r = pair[k, side]
-            out = points.copy()
-            for comp, surf in set(zip(mesh.component[r[ok]].tolist(),
-                                      mesh.surface[r[ok]].tolist())):
-                sel = ok & (mesh.component[r] == comp) & (mesh.surface[r] == surf)
-                out[sel] = lift(points[sel], tri[r[sel]], comp, surf)
-            got.append(out)
-        same = ok & np.all(got[0] == got[1], axis=1)
-        return np.where(same[:, None], got[0], points)
-
-    return move
 
 
 def _area(patch, vertices, edge_length):

@@ -1,0 +1,208 @@
+"""The patches the re-triangulation works on, and their charts.
+
+A patch is the connected part of one network or cap (:func:`patches`; a closed pod is
+opened at its middle ring). :func:`chart` flattens it conformally
+(:func:`juncture.surface.chart.lscm`) as it is (holes stay holes) or cut open into a disc (a
+tube, or one that flattens onto an annulus whose scale varies more than :data:`SPREAD`), and
+keeps what :mod:`juncture.surface.remesh` needs of it: its boundary edges (the constraints),
+normals and areas, the shortest edge refinement may make and the vertices a triangulation
+starts from.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .chart import disc, finder, lscm, patch_edges
+
+__all__ = ["Patch", "patches", "chart", "spread", "area3", "SHORTEST", "SLIVER", "SPREAD",
+           "NEAR", "SUPER"]
+
+#: Refinement makes no edge shorter than this share of a chart's median edge.
+SHORTEST = 0.02
+#: A patch whose area is below this share of a circle's of its boundary's length is a
+#: sliver: it keeps its triangles.
+SLIVER = 1e-3
+#: A chart with holes whose scale varies more than this (:func:`spread`) is cut open into a
+#: disc instead (a tube, a pod open at both ends, maps conformally onto an annulus whose
+#: scale grows exponentially along it: new triangles, straight in the chart, are not in 3-D).
+SPREAD = 10.0
+#: An inner vertex with an edge shorter than this share of its patch's median edge is not
+#: a vertex of the re-triangulation (:func:`_kept`).
+NEAR = 0.02
+SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
+
+
+@dataclass(eq=False)
+class Patch:
+    ids: np.ndarray                      # global vertex id of every chart vertex
+    tri: np.ndarray                      # chart triangles (local ids)
+    uv: np.ndarray                       # chart coordinates
+    edges: np.ndarray                    # boundary edges (local ids), in the loop's order
+    component: int
+    surface: int
+    normals: np.ndarray | None = None    # unit normals of the chart triangles (3-D)
+    areas: np.ndarray | None = None      # 3-D areas of the chart triangles
+    size: float = 0.0                    # the patch's extent
+    find: object = None                  # the chart's point locator
+    shortest: float = 0.0                # no edge shorter is made by refinement (chart)
+    kept: np.ndarray | None = None       # chart vertices triangulated (not NEAR others)
+    extra_uv: list = field(default_factory=list)   # interior points added, chart coords
+    extra_id: list = field(default_factory=list)
+    seen: int = -1                       # split points known at the last triangulation
+    out: np.ndarray | None = None        # current triangles (global ids)
+    lift: object = None                  # lift(points, corners, component, surface)
+
+
+def patches(mesh):
+    """Connected parts of every surface id, as (global triangle rows)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    out = []
+    for s in np.unique(mesh.surface):
+        rows = np.flatnonzero(mesh.surface == s)
+        t = mesh.triangles[rows]
+        _, und, uses, inverse = patch_edges(t)
+        owner = np.tile(np.arange(len(t)), 3)
+        order = np.argsort(inverse, kind="stable")
+        inv, own = inverse[order], owner[order]
+        same = inv[1:] == inv[:-1]
+        g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
+                       shape=(len(t), len(t)))
+        count, label = connected_components(g, directed=False)
+        for k in range(count):
+            out.extend(_opened(mesh, rows[label == k]))
+    return out
+
+
+def _opened(mesh, rows):
+    """A closed part (a pod pointed at both ends: no boundary, so no disc to chart) as its
+    two halves on either side of the ring of vertices nearest its middle along its longest
+    axis; the ring's edges become a seam between them. Any other part as it is."""
+    t = mesh.triangles[rows]
+    _, _, uses, _ = patch_edges(t)
+    if len(rows) < 8 or np.any(uses != 2):
+        return [rows]
+    p = mesh.vertices[np.unique(t)]
+    axis = int(np.argmax(np.ptp(p, axis=0)))
+    c = mesh.vertices[:, axis]
+    ring = p[np.argmin(np.abs(p[:, axis] - np.median(p[:, axis]))), axis]
+    low = (c[t] <= ring).all(axis=1)
+    if low.all() or not low.any():
+        return [rows]
+    return [rows[low], rows[~low]]
+
+
+def chart(mesh, rows):
+    """A :class:`Patch` of the triangles ``rows``, or None if it cannot be charted: flat as
+    it is (holes stay holes), else cut open into a disc (a tube, also where it charts as an
+    annulus whose scale varies more than :data:`SPREAD`)."""
+    t = mesh.triangles[rows]
+    used, local = np.unique(t, return_inverse=True)
+    local = local.reshape(t.shape)
+    if _sliver(mesh.vertices[used], local):
+        return None
+    annulus = None
+    for cut in (False, True):
+        got = disc(local, len(used)) if cut else (local, np.arange(len(used)))
+        chart = None if got is None else _flattened(mesh, used, *got)
+        if chart is None:
+            continue
+        tri, _, uv, _, cross, loops = chart
+        if not cut and loops > 1 and spread(uv[tri], np.linalg.norm(cross, axis=1)) > SPREAD:
+            annulus = chart           # a tube charted as an annulus: cut it open if it can be
+            continue
+        return _patch(mesh, rows, *chart)
+    return None if annulus is None else _patch(mesh, rows, *annulus)
+
+
+def _flattened(mesh, used, tri, parent):
+    """(tri, ids, uv, boundary edges, area vectors (twice), number of boundary loops) of a
+    chart of the local triangles ``tri`` over the vertices ``used[parent]``, or None (no
+    boundary, folded or crossing itself)."""
+    from .assemble import boundary_loops
+
+    ids = used[parent]
+    loops = boundary_loops(tri)
+    if not loops:
+        return None
+    uv = lscm(mesh.vertices[ids], tri)
+    edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
+    if uv is None or not _embedded(uv, edges):
+        return None
+    p = mesh.vertices[ids][tri]
+    return tri, ids, uv, edges, np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), len(loops)
+
+
+def _patch(mesh, rows, tri, ids, uv, edges, cross, _):
+    p = mesh.vertices[ids][tri]
+    double = np.linalg.norm(cross, axis=1)
+    return Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
+                  int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
+                  float(np.ptp(p.reshape(-1, 3), axis=0).max()), finder(uv, tri),
+                  _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges))
+
+
+def spread(flat, double):
+    """How much a chart's scale varies: the ratio of the 95th to the 5th percentile of its
+    triangles' chart area over their 3-D area (``double``: twice the 3-D areas)."""
+    e1, e2 = flat[:, 1] - flat[:, 0], flat[:, 2] - flat[:, 0]
+    ratio = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) / np.maximum(double, 1e-300)
+    lo, hi = np.quantile(ratio, [0.05, 0.95])
+    return hi / lo if lo > 0.0 else np.inf
+
+
+def _kept(points, tri, edges):
+    """(n,) bool: the chart vertices a triangulation starts from. Every boundary vertex; an
+    inner one unless an edge of it is shorter than :data:`NEAR` times the patch's median
+    edge (two rows of a network a few thousandths apart, where two intersection lines nearly
+    share a station: kept, they leave a row of slivers that refinement cannot mend). New
+    points are still taken onto the patch's own triangles, so the surface is the same."""
+    e = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+    length = np.linalg.norm(points[e[:, 0]] - points[e[:, 1]], axis=1)
+    short = length < NEAR * np.median(length)
+    out = np.ones(len(points), bool)
+    out[e[short].ravel()] = False
+    out[edges.ravel()] = True
+    return out
+
+
+def _shortest(uv, tri):
+    """The shortest edge refinement may make in a chart: a share ``SHORTEST`` of its median
+    edge. Near a corner of tiny angle (a thin trailing edge's wedge) refinement stops there
+    instead of grading down without end (and using up the points the rest needs)."""
+    e = np.linalg.norm(uv[tri] - uv[np.roll(tri, 1, axis=1)], axis=2)
+    return SHORTEST * float(np.median(e[e > 0]))
+
+
+def _sliver(points, tri):
+    """Whether a patch is a sliver (a cap closing a slit): its area below ``SLIVER`` times
+    that of a circle of its boundary's length; there is nothing to refine in it."""
+    from .assemble import boundary_loops
+
+    area = area3(points[tri]).sum()
+    length = sum(np.linalg.norm(points[lp] - points[np.roll(lp, -1)], axis=1).sum()
+                 for lp in boundary_loops(tri))
+    return length > 0 and 4.0 * np.pi * area < SLIVER * length ** 2
+
+
+def _embedded(uv, edges):
+    """Whether the chart's boundary edges cross nowhere (PythonCDT takes them all)."""
+    import pythoncdt as cdt
+
+    tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
+                            cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
+    try:
+        tri.insert_vertices(np.ascontiguousarray(uv))
+        tri.insert_edges(np.asarray(edges, np.uint32))
+    except (RuntimeError, ValueError):
+        return False
+    return tri.vertices_count() - SUPER == len(uv)
+
+
+def area3(p):
+    """(k,) areas of triangles (k, 3, 3)."""
+    return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)

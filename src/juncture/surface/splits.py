@@ -1,0 +1,132 @@
+"""Points added on the seams of a re-triangulation, shared by every patch that has them.
+
+:class:`Splits` holds the growing vertex array and, per input edge, the points added on it
+(one id per fraction, whichever patch made it), so that both sides of a seam take the same
+points. :func:`seam_lift` moves a split point onto the exact surface where the surfaces on
+both sides agree; :func:`fans` takes split points into a patch that keeps its triangles.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .chart import patch_edges
+
+__all__ = ["Splits", "fans", "seam_lift", "SAME_T"]
+
+#: Split points closer than this fraction of their edge are one point.
+SAME_T = 1e-6
+_NONE = (np.zeros(0), np.zeros(0, int))
+
+
+class Splits:
+    """The vertices, growing, and the points added on edges: one id per (edge, fraction),
+    shared by every patch that has the edge."""
+
+    def __init__(self, vertices, move=None):
+        self._xyz = np.array(vertices, float)
+        self.move = move                 # move(a, b, points): seam points onto the surface
+        self.pending = []                # (a, b, id) of split points not yet moved
+        self.n = len(vertices)
+        self.on = {}                     # (a, b) with a < b -> {t: id}, t from a
+        self._sorted = {}                # (a, b) -> (fractions, ids), sorted, as last asked
+
+    def add_vertex(self, p):
+        p = np.atleast_2d(p)
+        if self.n + len(p) > len(self._xyz):
+            grown = np.empty((2 * (self.n + len(p)), 3))
+            grown[:self.n] = self._xyz[:self.n]
+            self._xyz = grown
+        ids = np.arange(self.n, self.n + len(p))
+        self._xyz[ids] = p
+        self.n += len(p)
+        return ids
+
+    def split(self, a, b, t):
+        if a > b:
+            a, b, t = b, a, 1.0 - t
+        got = self.on.setdefault((a, b), {})
+        # Two patches that split one edge at its middle find fractions a few ulps apart.
+        if not any(abs(t - x) < SAME_T for x in got):
+            pa, pb = self._xyz[a], self._xyz[b]
+            got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
+            self._sorted.pop((a, b), None)
+            self.pending.append((a, b, got[t]))
+
+    def settle(self):
+        """Move the split points made since the last call onto the surface (``move``)."""
+        if self.move is not None and self.pending:
+            a, b, ids = (np.array(c) for c in zip(*self.pending))
+            self._xyz[ids] = self.move(a, b, self._xyz[ids])
+        self.pending = []
+
+    def along(self, a, b):
+        """(fractions from a, ids) of the points on edge (a, b), in order from a."""
+        key = (a, b) if a < b else (b, a)
+        if key not in self.on:
+            return _NONE
+        if key not in self._sorted:
+            got = self.on[key]
+            t = np.array(sorted(got))
+            self._sorted[key] = (t, np.array([got[x] for x in t]))
+        t, ids = self._sorted[key]
+        return (t, ids) if a < b else (1.0 - t[::-1], ids[::-1])
+
+    def all(self):
+        return self._xyz[:self.n]
+
+
+def fans(triangles, splits):
+    """Triangles (global ids) of a patch that keeps its own ``triangles``, with the split
+    points on their edges taken in: a triangle with points on an edge becomes the fan from
+    the opposite corner over them, and each piece again while it has points on an edge."""
+    out, todo = [], [tuple(t) for t in np.asarray(triangles).tolist()]
+    while todo:
+        t = todo.pop()
+        for k in range(3):
+            a, b, c = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+            ids = splits.along(a, b)[1].tolist()
+            if ids:
+                chain = [a, *ids, b]
+                todo.extend((p, q, c) for p, q in zip(chain[:-1], chain[1:]))
+                break
+        else:
+            out.append(t)
+    return np.array(out, np.int64).reshape(-1, 3)
+
+
+def seam_lift(mesh, lift):
+    """``move(a, b, points)`` for split points on the input edges (a, b): onto the exact
+    surface where both triangles on the edge lift a point to the same place (a split
+    between two blocks of one body: a straight edge between stations cuts the circle);
+    elsewhere (an intersection line, whose two sides would lift it apart) it stays on the
+    edge. None without ``lift``."""
+    if lift is None:
+        return None
+    tri = np.asarray(mesh.triangles)
+    n = len(mesh.vertices)
+    _, und, uses, inverse = patch_edges(tri)
+    rows = np.tile(np.arange(len(tri)), 3)
+    order = np.argsort(inverse, kind="stable")
+    first = np.searchsorted(inverse[order], np.arange(len(und)))
+    two = uses == 2                                    # the edge's two triangles
+    pair = np.stack([rows[order][first], rows[order][np.minimum(first + 1, len(rows) - 1)]],
+                    axis=1)
+    key = und[:, 0] * n + und[:, 1]
+
+    def move(a, b, points):
+        k = np.searchsorted(key, np.minimum(a, b) * n + np.maximum(a, b))
+        ok = two[k]
+        got = []
+        for side in (0, 1):
+            r = pair[k, side]
+            out = points.copy()
+            for comp, surf in set(zip(mesh.component[r[ok]].tolist(),
+                                      mesh.surface[r[ok]].tolist())):
+                sel = ok & (mesh.component[r] == comp) & (mesh.surface[r] == surf)
+                out[sel] = lift(points[sel], tri[r[sel]], comp, surf)
+            got.append(out)
+        same = ok & np.all(got[0] == got[1], axis=1)
+        return np.where(same[:, None], got[0], points)
+
+    return move
