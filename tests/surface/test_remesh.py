@@ -325,13 +325,13 @@ def test_a_flat_triangle_loses_the_refinement_point_opposite_its_longest_edge():
     point; one whose vertex there is the network's own keeps it."""
     from types import SimpleNamespace
 
-    from juncture.surface.remesh import FLAT3D, _drop_flat_apexes, _flat
+    from juncture.surface.remesh import FLAT3D, _drop_flat_apexes
 
     xyz = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 0.02, 0.0], [0.5, 1.0, 0.0]])
     splits = SimpleNamespace(all=lambda: xyz)
     local = np.array([[0, 1, 2], [1, 0, 3]])           # chart ids; gid maps them to xyz
     gid = np.array([0, 1, 2, 3])
-    flat, _ = _flat(xyz[gid[local]])
+    flat = triangle_angles(xyz, gid[local]).min(axis=1) < FLAT3D
     assert flat.tolist() == [True, False]
     assert np.degrees(np.arctan(0.02 / 0.5)) < FLAT3D
     patch = SimpleNamespace(extra_id=[np.array([2, 3])], extra_uv=[np.zeros((2, 2))])

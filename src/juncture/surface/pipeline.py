@@ -97,9 +97,6 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     passes every check needs no second one): one that fails is refused
     (:class:`~juncture.errors.GeometryError`, the cause first where known); one that passes
     is returned with the :class:`~juncture.errors.JunctureWarning` of :func:`quality`."""
-    import warnings
-
-    from ..errors import JunctureWarning
     from .check import check_mesh
 
     failures = None
@@ -113,12 +110,19 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
         report = check_mesh(surface.vertices, surface.triangles)
         _refuse(geometry, surface, report.failures())
     if failures:
-        warnings.warn(_NOT_KEPT + "; ".join(failures) + "): the networks' own triangles "
-                      "are used", JunctureWarning, stacklevel=3)
+        _not_kept(failures, stacklevel=4)
     return surface, report
 
 
-_NOT_KEPT = "the re-triangulation for triangle quality was not kept ("
+def _not_kept(failures, stacklevel):
+    """The warning that the re-triangulation was not kept, with why."""
+    import warnings
+
+    from ..errors import JunctureWarning
+
+    warnings.warn("the re-triangulation for triangle quality was not kept ("
+                  + "; ".join(failures) + "): the networks' own triangles are used",
+                  JunctureWarning, stacklevel=stacklevel)
 
 
 def _refuse(geometry, surface, failures):
@@ -152,15 +156,10 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points on the exact
     surfaces; ``curvature`` and ``depth`` (None: the defaults) size the triangles on them.
     """
-    import warnings
-
-    from ..errors import JunctureWarning
-
     better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance, check,
                                          lift, curvature, depth)
     if failures:
-        warnings.warn(_NOT_KEPT + "; ".join(failures) + "): the networks' own triangles "
-                      "are used", JunctureWarning, stacklevel=2)
+        _not_kept(failures, stacklevel=3)
     return better, report
 
 

@@ -75,7 +75,7 @@ FLOOR = 1e-6
 #: that is shorter, down to FINEST times its median edge.
 PIECE = 0.5
 FINEST = 1e-3
-#: A triangle with a 3-D angle under this [deg] (:func:`_flat`) loses the vertex opposite
+#: A triangle with a 3-D angle under this [deg] loses the vertex opposite
 #: its longest edge where refinement put it there (:func:`_drop_flat_apexes`).
 FLAT3D = 6.0
 
@@ -189,29 +189,21 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     return True
 
 
-def _flat(p):
-    """(k,) bool: triangles (k, 3, 3) with an angle under :data:`FLAT3D`, and (k, 3) their
-    edge lengths (edge j: corner j to j + 1)."""
-    d = p[:, [1, 2, 0]] - p
-    e = np.linalg.norm(d, axis=2)
-    cos = -np.einsum("kij,kij->ki", d, d[:, [2, 0, 1]]) / np.maximum(
-        e * e[:, [2, 0, 1]], 1e-300)                          # at corner j: edges j, j - 1
-    return cos.max(axis=1) > np.cos(np.radians(FLAT3D)), e
-
-
 def _drop_flat_apexes(patch, splits, gid, local):
     """In the rounds that add no seam points: drop the interior points (added by this
     patch's refinement) opposite the longest edge of a triangle flat in 3-D (a seam point
     that came late, lifted onto the surface beside a point put there before, or points
     crowded where the chart stretches); True if any was dropped (the patch is triangulated
     again without them at once, each time with fewer points)."""
+    from .quality import triangle_angles
+
     if not patch.extra_id:
         return False
-    flat, e = _flat(splits.all()[gid[local]])
-    if not flat.any():
+    angles = triangle_angles(splits.all(), gid[local])
+    rows = np.flatnonzero(angles.min(axis=1) < FLAT3D)
+    if not len(rows):
         return False
-    rows = np.flatnonzero(flat)
-    apex = local[rows, (np.argmax(e[rows], axis=1) + 2) % 3]   # opposite the longest edge
+    apex = local[rows, np.argmax(angles[rows], axis=1)]     # opposite the longest edge
     ids = np.concatenate(patch.extra_id)
     drop = np.intersect1d(gid[apex], ids)
     if not len(drop):
