@@ -40,3 +40,32 @@ def wing_body(z_root=0.0, dihedral_deg=0.0, root_y=1.0, radius=3.0, sweep_deg=40
     wing = WingLike("wing", "wing", le, chord, xc, up, up * 0.9, cam)
     return Configuration({"wing": wing, "body": body}, title="test wing-body",
                          reference_area=500.0)
+
+
+def section_area(vertices, triangles, x):
+    """The area a closed, consistently oriented triangulated surface encloses in the plane
+    x = const: the triangles it cuts give the section's segments (oriented by their normals),
+    and Green's theorem sums them. An independent slice, not juncture's."""
+    import numpy as np
+
+    p = np.asarray(vertices, float)[np.asarray(triangles)]
+    s = p[:, :, 0] - x
+    s = np.where(s == 0.0, 1e-300, s)
+    above = s > 0
+    cut = above.any(axis=1) & ~above.all(axis=1)
+    p, s, above = p[cut], s[cut], above[cut]
+    ends = []
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        crosses = above[:, a] != above[:, b]
+        t = (s[:, a] / np.where(crosses, s[:, a] - s[:, b], 1.0))[:, None]
+        ends.append((crosses, p[:, a] + t * (p[:, b] - p[:, a])))
+    crossing = np.stack([c for c, _ in ends], axis=1)          # two per triangle
+    points = np.stack([q for _, q in ends], axis=1)
+    first = np.argmax(crossing, axis=1)
+    second = 2 - np.argmax(crossing[:, ::-1], axis=1)
+    rows = np.arange(len(p))
+    u, v = points[rows, first], points[rows, second]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    flip = np.einsum("ij,ij->i", v - u, np.cross(n, [1.0, 0.0, 0.0])) < 0
+    u[flip], v[flip] = v[flip].copy(), u[flip].copy()
+    return abs(0.5 * np.sum(u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1]))

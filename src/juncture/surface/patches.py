@@ -54,6 +54,8 @@ class Patch:
     seen: int = -1                       # split points known at the last triangulation
     out: np.ndarray | None = None        # current triangles (global ids)
     lift: object = None                  # lift(points, corners, component, surface)
+    free: np.ndarray | None = None       # boundary edges whose split points stay on them
+    near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2)
 
 
 def patches(mesh):

@@ -58,6 +58,8 @@ SMALL = 0.05
 #: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
 #: still cross).
 TAPER = 10.0
+#: Samples of a patch's free boundary pieces in the k-d tree that finds the points near them.
+SAMPLES = 4000
 #: Default largest turn [deg] of an exact surface under one new edge, measured by its
 #: midpoint's sag (:func:`_bent`): the inscribed polygon of a circle at this spacing holds
 #: sin(a) / a of its area (0.7 % short at 12 deg, 0.5 % at 10). None: no such limit (the
@@ -88,13 +90,15 @@ class _Shape(NamedTuple):
 
 def _inputs(patch, splits):
     """Chart points (originals, then split points, then interior points), their global ids,
-    the constraint pieces (the boundary with its split points, chart ids) and, per piece,
-    its original edge (global ids) and the fractions of its ends along it."""
+    the constraint pieces (the boundary with its split points, chart ids), per piece its
+    original edge (global ids) and the fractions of its ends along it, and whether the
+    piece is free (its split points stay on the straight edge, not lifted)."""
     keep = np.flatnonzero(patch.kept)
     where = np.cumsum(patch.kept) - 1
-    uv, ids, cons, parent = [patch.uv[keep]], [patch.ids[keep]], [], []
+    uv, ids, cons, parent, free = [patch.uv[keep]], [patch.ids[keep]], [], [], []
     n = len(keep)
-    for i, j in patch.edges.tolist():
+    edge_free = np.ones(len(patch.edges), bool) if patch.free is None else patch.free
+    for (i, j), loose in zip(patch.edges.tolist(), edge_free.tolist()):
         gi, gj = int(patch.ids[i]), int(patch.ids[j])
         t, sid = splits.along(gi, gj)
         chain = [int(where[i]), *range(n, n + len(t)), int(where[j])]
@@ -105,10 +109,12 @@ def _inputs(patch, splits):
             n += len(t)
         cons.extend(zip(chain[:-1], chain[1:]))
         parent.extend((gi, gj, frac[k], frac[k + 1]) for k in range(len(chain) - 1))
+        free.extend([loose] * (len(chain) - 1))
     if patch.extra_uv:
         uv.append(np.concatenate(patch.extra_uv))
         ids.append(np.concatenate(patch.extra_id))
-    return np.concatenate(uv), np.concatenate(ids), np.array(cons, np.uint32), parent
+    return (np.concatenate(uv), np.concatenate(ids), np.array(cons, np.uint32), parent,
+            np.array(free, bool))
 
 
 def _known(patch, splits):
@@ -138,7 +144,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     """
     import pythoncdt as cdt
 
-    uv, ids, cons, parent = _inputs(patch, splits)
+    uv, ids, cons, parent, free = _inputs(patch, splits)
     n = len(uv)
     tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
                             cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
@@ -176,8 +182,9 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     if on_edge:
         return False
     local = tri.triangles_array()["vertices"].astype(np.int64) - SUPER
-    boundary = np.zeros(len(pts), bool)
-    boundary[cons.ravel()] = True
+    boundary = np.zeros((len(pts), 2), bool)       # on the boundary, on a free piece
+    boundary[cons.ravel(), 0] = True
+    boundary[cons[free].ravel(), 1] = True
     if not refine and _drop_flat_apexes(patch, splits, gid, local):
         return _AGAIN        # no seam points are added now: triangulate again at once
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
@@ -228,29 +235,28 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
     on, under = locate(patch.uv, patch.tri, vertices[patch.ids], centre, patch.find)
     flat = splits.all()[gid[local]].mean(axis=1)
     dev = np.linalg.norm(on - flat, axis=1)
-    across = boundary[local].all(axis=1) & (dev > 1e-9 * patch.size)
+    across = boundary[local, 0].all(axis=1) & (dev > 1e-9 * patch.size)
     if tol is None:
         return centre[across]
-    if patch.lift is not None:  # off the exact surface, where there is one, but for
-        # triangles on the boundary: its straight seam edges are not lifted, splitting there
-        # would not end
-        lifted = np.linalg.norm(_lifted(patch, on, under) - flat, axis=1)
-        inner = ~boundary[local].any(axis=1)
-        dev = np.where(inner, lifted, dev)
+    if patch.lift is not None:  # off the exact surface, where there is one, as a new
+        # point there would be put: near a free boundary piece (a straight seam edge, not
+        # lifted) only part of the way (:func:`_lifted`), so splitting there ends
+        dev = np.linalg.norm(_lifted(patch, on, under, centre) - flat, axis=1)
+        inner = ~boundary[local, 1].any(axis=1)
         bent = inner & _bent(patch, splits, vertices, pts, gid, local, shape)
     else:
         bent = np.zeros(len(local), bool)
-    far = dev > tol
+    turns = np.zeros(len(local), bool)
     n0 = patch.normals[under]
     for k in range(3):
         corner = pts[local[:, k]] + 1e-3 * (centre - pts[local[:, k]])  # inside, not on
         nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids], corner,
                                   patch.find)[1]]
-        far |= np.einsum("ij,ij->i", n0, nk) < shape.turn
+        turns |= np.einsum("ij,ij->i", n0, nk) < shape.turn
     # a triangle far smaller than the input triangle under it is not split again (at a
     # crease, where every triangle astride it turns, splitting would not end)
     small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
-    return centre[(far & ~small) | across | bent]
+    return centre[((dev > tol) | turns) & ~small | across | bent]
 
 
 def _bent(patch, splits, vertices, pts, gid, local, shape):
@@ -288,22 +294,47 @@ def _bent(patch, splits, vertices, pts, gid, local, shape):
 
 def _lifted(patch, points, under, query=None):
     """Points on the patch's chart triangles ``under``, lifted onto the exact surface; with
-    the chart points ``query``, a point nearer the patch's boundary than :data:`TAPER`
-    times its lift is lifted that share of the way only. The seams are straight chords of
-    the exact intersection lines: a point next to one lifted in full stands out of the chord
-    by the sag, and where the surfaces meet at a small angle (a low wing's upper surface
-    and the fuselage side) it went through the other surface."""
+    the chart points ``query``, a point nearer the patch's free boundary (a seam whose two
+    sides do not lift alike) than :data:`TAPER` times its lift is lifted that share of the
+    way only. Such seams are straight chords of the exact intersection lines: a point next
+    to one lifted in full stands out of the chord by the sag, and where the surfaces meet at
+    a small angle (a low wing's upper surface and the fuselage side) it went through the
+    other surface. A seam that both sides lift alike (a split within one body) or that lies
+    on both (a wing's leading edge) tapers nothing: on a body whose stations are far apart,
+    whose networks cut its circle by a tenth of its radius, new points near them were left
+    that far inside."""
     lifted = patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
     if query is None or not len(points):
         return lifted
-    a, b = patch.uv[patch.edges[:, 0]], patch.uv[patch.edges[:, 1]]
-    d = b - a
-    length = np.linalg.norm(d, axis=1)
-    t = np.clip(((query[:, None] - a) * d).sum(-1) / np.maximum(length ** 2, 1e-300), 0, 1)
-    dist = np.linalg.norm(query[:, None] - a - t[..., None] * d, axis=-1)
     move = np.linalg.norm(lifted - points, axis=1)
-    w = np.clip(dist.min(axis=1) / np.maximum(TAPER * move, 1e-300), 0.0, 1.0)
+    w = _taper(patch, query, TAPER * move)
     return points + w[:, None] * (lifted - points)
+
+
+def _taper(patch, query, reach):
+    """(k,) the share of its lift each chart point takes: its distance from the patch's free
+    boundary pieces (:func:`_inputs`) over ``reach``, at most 1. The distance is that to the
+    nearest of :data:`SAMPLES` points spread along those pieces (a k-d tree built once per
+    patch) less half their spacing: never more than the true distance, so a point near a
+    seam is never lifted further than its share."""
+    from scipy.spatial import cKDTree
+
+    edges = patch.edges if patch.free is None else patch.edges[patch.free]
+    if not len(edges):
+        return np.ones(len(query))
+    if patch.near is None:
+        a, b = patch.uv[edges[:, 0]], patch.uv[edges[:, 1]]
+        length = np.linalg.norm(b - a, axis=1)
+        count = np.maximum(np.ceil(length / (length.sum() / SAMPLES + 1e-300)), 1).astype(int)
+        row = np.repeat(np.arange(len(a)), count + 1)
+        t = np.arange(len(row)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
+        t = t / np.repeat(count, count + 1)
+        patch.near = (cKDTree(a[row] + t[:, None] * (b - a)[row]),
+                      0.5 * float((length / count).max()))
+    tree, half = patch.near
+    far = float(reach.max(initial=0.0)) + half     # beyond: lifted in full, not searched
+    dist = np.maximum(tree.query(query, distance_upper_bound=far)[0] - half, 0.0)
+    return np.clip(dist / np.maximum(reach, 1e-300), 0.0, 1.0)
 
 
 def _on_surface(patch, vertices, query):
@@ -420,6 +451,9 @@ def _sorted_patches(mesh, keep, lift, splits):
             kept.append(rows)
         else:
             patch.lift = lift
+            ends = patch.ids[patch.edges]
+            patch.free = (np.ones(len(ends), bool) if splits.move is None
+                          else ~splits.move.agree(ends[:, 0], ends[:, 1]))
             charted.append(patch)
     return charted, kept, strips
 

@@ -100,7 +100,8 @@ def seam_lift(mesh, lift):
     surface where both triangles on the edge lift a point to the same place (a split
     between two blocks of one body: a straight edge between stations cuts the circle);
     elsewhere (an intersection line, whose two sides would lift it apart) it stays on the
-    edge. None without ``lift``."""
+    edge. ``move.agree(a, b)`` says on which input edges both sides agree. None without
+    ``lift``."""
     if lift is None:
         return None
     tri = np.asarray(mesh.triangles)
@@ -114,7 +115,8 @@ def seam_lift(mesh, lift):
                     axis=1)
     key = und[:, 0] * n + und[:, 1]
 
-    def move(a, b, points):
+    def both(a, b, points):
+        """(points lifted by the triangle on one side, by the other, both sides exist)."""
         k = np.searchsorted(key, np.minimum(a, b) * n + np.maximum(a, b))
         ok = two[k]
         got = []
@@ -126,7 +128,24 @@ def seam_lift(mesh, lift):
                 sel = ok & (mesh.component[r] == comp) & (mesh.surface[r] == surf)
                 out[sel] = lift(points[sel], tri[r[sel]], comp, surf)
             got.append(out)
-        same = ok & np.all(got[0] == got[1], axis=1)
-        return np.where(same[:, None], got[0], points)
+        return got[0], got[1], ok
 
+    def move(a, b, points):
+        one, other, ok = both(a, b, points)
+        same = ok & np.all(one == other, axis=1)
+        return np.where(same[:, None], one, points)
+
+    def agree(a, b):
+        """(k,) bool: the input edges (a, b) on which both sides lift a point to the same
+        place (tried at their middles): a split point there lies on the exact surface, or
+        stays on an edge of it (a split within one body, a wing's leading edge, a body's
+        straight generator). Not an intersection line: its two sides lift apart."""
+        a, b = np.asarray(a, np.int64), np.asarray(b, np.int64)
+        if not len(a):
+            return np.zeros(0, bool)
+        xyz = np.asarray(mesh.vertices, float)
+        one, other, ok = both(a, b, 0.5 * (xyz[a] + xyz[b]))
+        return ok & np.all(one == other, axis=1)
+
+    move.agree = agree
     return move
