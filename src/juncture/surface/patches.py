@@ -18,7 +18,7 @@ import numpy as np
 from .chart import disc, finder, lscm, patch_edges
 
 __all__ = ["Patch", "patches", "chart", "spread", "area3", "SHORTEST", "SLIVER", "SPREAD",
-           "NEAR", "SUPER"]
+           "NEAR", "SUPER", "SAMPLES", "taper"]
 
 #: Refinement makes no edge shorter than this share of a chart's median edge.
 SHORTEST = 0.02
@@ -32,6 +32,8 @@ SPREAD = 10.0
 #: An inner vertex with an edge shorter than this share of its patch's median edge is not
 #: a vertex of the re-triangulation (:func:`_kept`).
 NEAR = 0.02
+#: Samples of a patch's free boundary pieces in the k-d tree that finds the points near them.
+SAMPLES = 4000
 SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
 
 
@@ -208,3 +210,29 @@ def _embedded(uv, edges):
 def area3(p):
     """(k,) areas of triangles (k, 3, 3)."""
     return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+
+
+def taper(patch, query, reach):
+    """(k,) the share of its lift each chart point takes: its distance from the patch's free
+    boundary edges (``patch.free``: seams whose two sides do not lift alike) over ``reach``,
+    at most 1. The distance is that to the nearest of :data:`SAMPLES` points spread along
+    those edges (a k-d tree built once per patch) less half their spacing: never more than
+    the true distance, so a point near a seam is never lifted further than its share."""
+    from scipy.spatial import cKDTree
+
+    edges = patch.edges if patch.free is None else patch.edges[patch.free]
+    if not len(edges):
+        return np.ones(len(query))
+    if patch.near is None:
+        a, b = patch.uv[edges[:, 0]], patch.uv[edges[:, 1]]
+        length = np.linalg.norm(b - a, axis=1)
+        count = np.maximum(np.ceil(length / (length.sum() / SAMPLES + 1e-300)), 1).astype(int)
+        row = np.repeat(np.arange(len(a)), count + 1)
+        t = np.arange(len(row)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
+        t = t / np.repeat(count, count + 1)
+        patch.near = (cKDTree(a[row] + t[:, None] * (b - a)[row]),
+                      0.5 * float((length / count).max()))
+    tree, half = patch.near
+    far = float(reach.max(initial=0.0)) + half     # beyond: lifted in full, not searched
+    dist = np.maximum(tree.query(query, distance_upper_bound=far)[0] - half, 0.0)
+    return np.clip(dist / np.maximum(reach, 1e-300), 0.0, 1.0)

@@ -36,7 +36,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
-from .patches import SHORTEST, SUPER, area3, chart, patches
+from .patches import SHORTEST, SUPER, area3, chart, patches, taper
 from .splits import Splits, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
@@ -58,8 +58,6 @@ SMALL = 0.05
 #: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
 #: still cross).
 TAPER = 10.0
-#: Samples of a patch's free boundary pieces in the k-d tree that finds the points near them.
-SAMPLES = 4000
 #: Default largest turn [deg] of an exact surface under one new edge, measured by its
 #: midpoint's sag (:func:`_bent`): the inscribed polygon of a circle at this spacing holds
 #: sin(a) / a of its area (0.7 % short at 12 deg, 0.5 % at 10). None: no such limit (the
@@ -307,34 +305,8 @@ def _lifted(patch, points, under, query=None):
     if query is None or not len(points):
         return lifted
     move = np.linalg.norm(lifted - points, axis=1)
-    w = _taper(patch, query, TAPER * move)
+    w = taper(patch, query, TAPER * move)
     return points + w[:, None] * (lifted - points)
-
-
-def _taper(patch, query, reach):
-    """(k,) the share of its lift each chart point takes: its distance from the patch's free
-    boundary pieces (:func:`_inputs`) over ``reach``, at most 1. The distance is that to the
-    nearest of :data:`SAMPLES` points spread along those pieces (a k-d tree built once per
-    patch) less half their spacing: never more than the true distance, so a point near a
-    seam is never lifted further than its share."""
-    from scipy.spatial import cKDTree
-
-    edges = patch.edges if patch.free is None else patch.edges[patch.free]
-    if not len(edges):
-        return np.ones(len(query))
-    if patch.near is None:
-        a, b = patch.uv[edges[:, 0]], patch.uv[edges[:, 1]]
-        length = np.linalg.norm(b - a, axis=1)
-        count = np.maximum(np.ceil(length / (length.sum() / SAMPLES + 1e-300)), 1).astype(int)
-        row = np.repeat(np.arange(len(a)), count + 1)
-        t = np.arange(len(row)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
-        t = t / np.repeat(count, count + 1)
-        patch.near = (cKDTree(a[row] + t[:, None] * (b - a)[row]),
-                      0.5 * float((length / count).max()))
-    tree, half = patch.near
-    far = float(reach.max(initial=0.0)) + half     # beyond: lifted in full, not searched
-    dist = np.maximum(tree.query(query, distance_upper_bound=far)[0] - half, 0.0)
-    return np.clip(dist / np.maximum(reach, 1e-300), 0.0, 1.0)
 
 
 def _on_surface(patch, vertices, query):
