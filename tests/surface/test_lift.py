@@ -183,3 +183,33 @@ def test_a_nose_given_by_two_stations_is_meshed_on_the_model():
     assert np.all(np.abs(mesh / model - 1.0) < 0.05)
     volume = union_volume(geo.configuration, n=121, cells=1500)
     assert abs(surface.volume() / volume - 1.0) < 0.01
+
+
+def test_seams_within_one_body_are_lifted_alike(transport):
+    """``seam_lift(...).agree``: the seams between the fuselage's blocks (and their images)
+    lie within one surface, lifted alike from both sides, so new points near them are lifted
+    in full; no intersection line is (its two sides lift apart), so new points near one are
+    lifted only part of the way (remesh.TAPER)."""
+    from juncture.surface.chart import patch_edges
+    from juncture.surface.splits import seam_lift
+
+    _, geo, assembled, _ = transport
+    move = seam_lift(assembled, surface_lift(geo, assembled))
+    _, und, uses, inverse = patch_edges(assembled.triangles)
+    rows = np.tile(np.arange(len(assembled.triangles)), 3)
+    sides = np.full((len(und), 2), -1)
+    order = np.argsort(inverse, kind="stable")
+    first = np.searchsorted(inverse[order], np.arange(len(und)))
+    sides[:, 0] = rows[order][first]
+    sides[uses == 2, 1] = rows[order][first[uses == 2] + 1]
+    two = uses == 2
+    comp = assembled.component[sides[two]]
+    names = np.array(assembled.components)[comp]
+    surf = assembled.surface[sides[two]]
+    seam = surf[:, 0] != surf[:, 1]
+    cap = np.array([s.endswith(" cap") for s in assembled.surfaces])[surf].any(axis=1)
+    agree = move.agree(und[two, 0], und[two, 1])
+    within_body = seam & ~cap & (names[:, 0] == "body") & (names[:, 1] == "body")
+    crossing = seam & (names[:, 0] != names[:, 1])
+    assert within_body.sum() > 50 and agree[within_body].all()
+    assert crossing.sum() > 100 and not agree[crossing].any()
