@@ -158,6 +158,7 @@ def test_without_a_model_there_is_no_lift():
     assert surface_lift(geo, assemble(geo, cap=False)) is None
 
 
+@pytest.mark.slow
 def test_a_nose_given_by_two_stations_is_meshed_on_the_model():
     """A generated airplane whose fuselage nose is given by two stations
     (tests/data/generated/README.md): its networks are a cone, the model's PCHIP radius an
