@@ -423,11 +423,24 @@ def _sorted_patches(mesh, keep, lift, splits):
             kept.append(rows)
         else:
             patch.lift = lift
-            ends = patch.ids[patch.edges]
-            patch.free = (np.ones(len(ends), bool) if splits.move is None
-                          else ~splits.move.agree(ends[:, 0], ends[:, 1]))
             charted.append(patch)
+    _mark_free(charted, splits)
     return charted, kept, strips
+
+
+def _mark_free(charted, splits):
+    """``patch.free`` of every charted patch: its boundary edges whose two sides do not
+    lift alike (``splits.move.agree``, asked once per seam edge, which two patches share)."""
+    if not charted:
+        return
+    ends = [np.sort(p.ids[p.edges], axis=1) for p in charted]
+    if splits.move is None:
+        free = np.ones(sum(map(len, ends)), bool)
+    else:
+        seams, inverse = np.unique(np.concatenate(ends), axis=0, return_inverse=True)
+        free = ~splits.move.agree(seams[:, 0], seams[:, 1])[inverse.ravel()]
+    for patch, part in zip(charted, np.split(free, np.cumsum(list(map(len, ends)))[:-1])):
+        patch.free = part
 
 
 def _area(patch, vertices, edge_length):
