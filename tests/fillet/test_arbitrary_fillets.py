@@ -8,8 +8,10 @@ surfaces (``tests.deckgen`` references, independent of juncture):
 - it starts on the fuselage's section, ends on the lofting line, and no point lies inside
   the fuselage (the deck's polyline, closed by its mirror image: a crossing-number test
   here) or inside the wing;
-- a cubic line leaves the section along the polyline piece it starts on and reaches the
-  lofting line along it (exact cubic through the points, 1e-9 rad); a circular arc touches
+- a cubic line leaves the section along the polyline piece it starts on (near a vertex,
+  turned outward from it by at most the turn angles within a quarter of a piece) and
+  reaches the lofting line along it (exact cubic through the points, 1e-9 rad); a circular
+  arc touches
   the section where its radius is normal to the piece;
 - the line and the region it fills do not cross themselves (exact orientation predicate);
 - the area it adds equals a polygon of the same region with 4001 points of the curve and
@@ -80,6 +82,34 @@ def _pieces_at(poly, q, tol):
     t = np.clip(((q - a) * d).sum(1) / len2, 0.0, 1.0)
     near = np.linalg.norm(q - a - t[:, None] * d, axis=1) <= tol
     return d[near] / np.sqrt(len2[near])[:, None]
+
+
+def _start_excess(poly, q, v, tol):
+    """How far [rad] the start direction v (2,) of a cubic fillet at q lies outside what it
+    may be: the direction of the section's piece through q (either sense), turned outward
+    (never into the section) by at most the turn angles of the vertices within a quarter
+    of the section's median piece from q along the section (where the direction turns
+    from one piece's to the next one's, so that it is continuous in q). 0 where it holds."""
+    whole = np.vstack([poly[::-1] * [-1.0, 1.0], poly])
+    keep = np.concatenate([[True], np.hypot(*np.diff(whole, axis=0).T) > 0])
+    whole = whole[keep]
+    a, d = whole[:-1], np.diff(whole, axis=0)
+    length = np.hypot(*d.T)
+    unit = d / length[:, None]
+    cum = np.concatenate([[0.0], np.cumsum(length)])
+    turn = np.abs((np.diff(np.arctan2(unit[:, 1], unit[:, 0])) + np.pi) % (2 * np.pi) - np.pi)
+    reach = 0.3 * np.median(np.hypot(*np.diff(poly, axis=0).T)[
+        np.hypot(*np.diff(poly, axis=0).T) > 1e-9 * cum[-1]])
+    v = v / np.linalg.norm(v)
+    t = np.clip(((q - a) * d).sum(1) / length ** 2, 0.0, 1.0)
+    best = np.inf
+    for i in np.flatnonzero(np.linalg.norm(q - a - t[:, None] * d, axis=1) <= tol):
+        at = cum[i] + t[i] * length[i]
+        allowed = turn[np.abs(cum[1:-1] - at) <= reach + tol].sum()
+        off = min(np.arctan2(abs(v[0] * p[1] - v[1] * p[0]), v @ p) for p in (unit[i], -unit[i]))
+        inward = max(0.0, -(v @ np.array([unit[i, 1], -unit[i, 0]])))
+        best = min(best, max(off - allowed, 0.0) + inward)
+    return best
 
 
 def _arc_param(poly, q):
@@ -164,11 +194,11 @@ def check_arbitrary_fillets(text, desc, kind="cubic", opts=None):
             dirs = _pieces_at(poly, pts[j, 0, 1:], tol)
             assert len(dirs), (f.side, j)
             if kind == "cubic" and np.linalg.norm(d0[j]) > 1e-4 * length:
-                # Leaves the section along the piece it starts on.
+                # Leaves the section along the piece it starts on, turned outward near a
+                # vertex by at most the turns there.
                 assert abs(d0[j, 0]) <= ANGLE * np.linalg.norm(d0[j])
-                a = angle(np.concatenate([[0.0], d0[j, 1:]])[None],
-                          np.concatenate([np.zeros((len(dirs), 1)), dirs], axis=1))
-                assert np.min(np.minimum(a, np.pi - a)) < ANGLE, (f.side, j, a)
+                gap = _start_excess(poly, pts[j, 0, 1:], d0[j, 1:], tol)
+                assert gap < ANGLE, (f.side, j, gap)
             if kind == "circular" and len(dirs) == 1:
                 # The arc's radius at its start is normal to the piece it touches (at a
                 # vertex of the section any direction in between would do).

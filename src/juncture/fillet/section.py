@@ -13,9 +13,11 @@ side, which is what this module gives the fillet code, vectorised over lines:
   arc length at the stations). **Past the paper:** the start point lies at the arc length
   ``phi * r_eq`` from I along the section (r_eq = sqrt(A / pi), the equivalent radius, so
   theta_u = 20 deg means the same arc on a circle and on a section of the same area), and
-  the tangent at B is that of the polyline piece on I's side of B (where B is a vertex the
-  section has no single tangent; the fillet continues the piece it covers). A straight
-  piece has no curvature, so the circle's curvature terms vanish there.
+  the tangent at B is that of the polyline piece on I's side of B, turned outward near a
+  vertex towards the next piece's direction (a vertex has no single tangent; turning there
+  makes the fillet a continuous function of the geometry and keeps it out of the section:
+  :meth:`PolylineFrame._up`). A straight piece has no curvature, so the circle's
+  curvature terms vanish there.
 
 Methods (x, parameters and signs (m,); points (m, 3)):
 
@@ -41,6 +43,10 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["CircleFrame", "PolylineFrame", "section_frame"]
+
+#: Share of a section's median piece, from a vertex, over which a fillet's start direction
+#: turns from one piece's to the other's (:meth:`PolylineFrame._up`).
+ZONE = 0.25
 
 
 def section_frame(body):
@@ -132,8 +138,8 @@ class PolylineFrame(_Frame):
     circular = False
 
     def _piece(self, x, s, above):
-        """End points (m, 2) of the polyline piece holding s at x: the piece above s where s
-        is a vertex and ``above`` (m,) is True, else the one below."""
+        """End points (m, 2) of the polyline piece holding s at x, and its index j (m,): the
+        piece above s where s is a vertex and ``above`` (m,) is True, else the one below."""
         b = self.body
         k, w = b._pair(np.asarray(x, float))
         u = b._u[k]
@@ -148,17 +154,63 @@ class PolylineFrame(_Frame):
             if not flat.any():
                 break
             jj = np.clip(j + step, 0, b._count[k] - 2)
-            q0 = b._blend(k, w[:, None], jj)
-            q1 = b._blend(k, w[:, None], jj + 1)
-            p0 = np.where(flat[:, None], q0, p0)
-            p1 = np.where(flat[:, None], q1, p1)
-        return p0, p1
+            p0 = np.where(flat[:, None], b._blend(k, w[:, None], jj), p0)
+            p1 = np.where(flat[:, None], b._blend(k, w[:, None], jj + 1), p1)
+            j = np.where(flat, jj, j)
+        return p0, p1, j
 
-    def _up(self, x, s, above):
+    def _along(self, x, s, above):
         """Unit direction (m, 2) of increasing s along the piece (see :meth:`_piece`)."""
-        p0, p1 = self._piece(x, s, above)
+        p0, p1, _ = self._piece(x, s, above)
         d = p1 - p0
         return d / np.maximum(np.hypot(*d.T), 1e-300)[:, None]
+
+    def _up(self, x, s, toward_up):
+        """Unit direction (m, 2) of increasing s along the section at B = point(x, s), with
+        I on the side ``toward_up`` (m,) (True: I at larger s).
+
+        That of the piece on I's side of B, turned outward near the vertices where that
+        direction would jump into the section as B crosses them: a convex vertex behind B
+        (away from I) and a concave one ahead of it. Each such vertex within h of B (along
+        the section) turns the direction by its turn angle times 1 - distance / h, h =
+        :data:`ZONE` times the longer of its two pieces or the section's median piece,
+        whichever is shorter; so at the vertex the direction is
+        already the next piece's. It is therefore a continuous function of B (a fillet on a
+        polyline section moves continuously with the geometry, as keep_area's iteration and
+        a design study need, also across the near-duplicate vertices of a section blended
+        between two stations), and never points into the section: it is B's own piece's
+        direction turned outward by at most the turns within h.
+        """
+        b = self.body
+        x = np.asarray(x, float)
+        up = np.asarray(toward_up, bool)
+        _, _, j = self._piece(x, s, up)
+        sec = b._sections_at(x)                                  # (m, M, 2)
+        d = np.diff(sec, axis=1)
+        length = np.hypot(d[..., 0], d[..., 1])
+        angle = np.where(length > 0, np.arctan2(d[..., 1], d[..., 0]), np.nan)
+        # zero-length pieces take the previous piece's direction (its turn goes to one vertex)
+        idx = np.where(length > 0, np.arange(length.shape[1]), 0)
+        np.maximum.accumulate(idx, axis=1, out=idx)
+        angle = np.take_along_axis(angle, idx, axis=1)
+        angle = np.where(np.isnan(angle), np.nanmax(np.where(length > 0, angle, -np.inf),
+                                                     axis=1, keepdims=True), angle)
+        turn = (np.diff(angle, axis=1) + np.pi) % (2 * np.pi) - np.pi   # at vertices 1..M-2
+        sigma = np.concatenate([np.zeros((len(x), 1)), np.cumsum(length, axis=1)], axis=1)
+        rows = np.arange(len(x))
+        t = np.clip((np.linalg.norm(b.point(x, s)[:, 1:] - sec[rows, j], axis=1)
+                     / np.maximum(length[rows, j], 1e-300)), 0.0, 1.0)
+        at = sigma[rows, j] + t * length[rows, j]               # B's arc length
+        median = np.nanmedian(np.where(length > 1e-9 * sigma[:, -1:], length, np.nan), axis=1)
+        h = ZONE * np.minimum(median[:, None], np.maximum(length[:, :-1], length[:, 1:]))
+        vertex = sigma[:, 1:-1]
+        behind = np.where(up[:, None], vertex <= at[:, None], vertex >= at[:, None])
+        outward = np.where(behind, np.maximum(turn, 0.0), np.maximum(-turn, 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            weight = np.clip(1.0 - np.abs(vertex - at[:, None]) / h, 0.0, 1.0)
+        weight = np.where(h > 0, weight, 0.0)
+        psi = angle[rows, j] + np.where(up, -1.0, 1.0) * (outward * weight).sum(axis=1)
+        return np.stack([np.cos(psi), np.sin(psi)], axis=1)
 
     def _half_length(self, x):
         sec = self.body._sections_at(np.asarray(x, float))
@@ -196,7 +248,7 @@ class PolylineFrame(_Frame):
 
     def wedge(self, direction, x, p, sign):
         sign = np.broadcast_to(np.asarray(sign, float), np.shape(p))
-        t = self._up(x, p, sign > 0) * sign[:, None]  # towards the fillet side
+        t = self._along(x, p, sign > 0) * sign[:, None]  # towards the fillet side
         phi = np.pi - sign * (np.arctan2(t[:, 1], t[:, 0])
                               - np.arctan2(direction[:, 1], direction[:, 0]))
         return (phi + np.pi) % (2 * np.pi) - np.pi
@@ -219,7 +271,7 @@ class PolylineFrame(_Frame):
         B = control[:, 0]
         s = self.body.parameter_of(B)
         # The piece the curve leaves along: the one P1 lies towards (B -> P1 is its tangent).
-        up = self._up(B[:, 0], s, np.ones(len(s), bool))
+        up = self._along(B[:, 0], s, np.ones(len(s), bool))
         toward_up = ((control[:, 1, 1:] - B[:, 1:]) * up).sum(1) > 0
         sign = np.where(toward_up, -1.0, 1.0)  # the fillet side is opposite to its travel
         n = self.normal(B[:, 0], s, sign)
