@@ -18,7 +18,7 @@ import pytest
 
 import juncture as jc
 from juncture.intersect import intersect_body_both
-from juncture.misses import line_ends
+from juncture.misses import line_ends, plane_points
 from juncture.surface.networks import split_counts
 from tests.deckgen.references import WingLikeRef
 from tests.support import wing_body
@@ -281,17 +281,25 @@ def test_every_option_set_on_a_generated_high_wing_deck():
         assert max(seam_gaps(geo)) <= 1e-11 * desc["length"]
 
 
-def test_a_line_entering_only_through_a_joint_step_is_named():
-    """Known (issue 11): a lofting line that enters the fuselage only through the step face
-    of a repeated joint station is taken for a miss; its end on the plane of symmetry then
-    lies inside the fuselage, and the log says so (generated deck, fixed seed)."""
+def test_a_line_entering_only_through_a_joint_step_is_refused_by_name():
+    """A lofting line that enters the fuselage only through the step face of a repeated
+    joint station (no surface juncture intersects) would be taken for a miss and continued
+    to the plane of symmetry inside the fuselage: refused in one line naming the wing, the
+    line and the step's station, with every fillet option (generated deck, fixed seed)."""
     from tests.deckgen import deck_from_seed, read_text
 
-    text, _ = deck_from_seed(11228, (), section="arbitrary")
+    text, desc = deck_from_seed(11228, (), section="arbitrary")
     cfg = read_text(text)
-    geo = complete(cfg, None)
-    named = [s for s in geo.log if "enters body only where no surface is taken" in s]
-    assert len(named) == 1 and "lofting line 4" in named[0]
     _, il = intersect_body_both(cfg["wing"], cfg["body"])
-    q = line_ends(cfg["wing"], cfg["body"], il).points[3]
-    assert cfg["body"].signed_distance(q[None])[0] < 0  # inside, as the log says
+    assert not il.found[3]
+    # its end on the plane of symmetry lies inside the fuselage
+    q = plane_points(cfg["wing"], cfg["body"], "lower")[0][3]
+    assert cfg["body"].signed_distance(q[None])[0] < 0
+    x = np.asarray(cfg["body"].x_global)
+    steps = x[1:][x[1:] == x[:-1]]
+    for fillet in (None, "cubic", "circular"):
+        with pytest.raises(jc.GeometryError) as err:
+            complete(cfg, fillet)
+        msg = str(err.value)
+        assert "\n" not in msg and msg.startswith("wing: lower lofting line 4 enters body")
+        assert any(f"step at x = {v:.6g}" in msg for v in steps), msg

@@ -47,6 +47,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from .errors import GeometryError
 from .intersect.rays import polyline_points
 from .surface.networks import body_range
 
@@ -118,23 +119,40 @@ def line_ends(wing, body, inter):
         above = missed & (q[:, 2] >= body.center_at(q[:, 0])[:, 1])
         pts[missed], u[missed] = q[missed], u_q[missed]
         theta[missed] = np.where(above[missed], top, bottom)
-        # A line "missing" the body whose end on the plane of symmetry is inside it entered
-        # only where the search finds no surface (the step of a joint station repeated with
-        # another section, an open end): said, since that end is then wrong (issue 11).
-        size = 1e-9 * max(float(body.length), 1.0)
-        distance = body.radial_error if hasattr(body, "radial_error") else \
-            body.signed_distance
-        buried = missed & (distance(np.where(missed[:, None], q, 0.0)) < -size)
         for j in np.flatnonzero(missed):
             where = "over" if above[j] else "under"
             log.append(f"{inter.name}: lofting line {j + 1} passes {where} {body.name}; "
                        f"continued to the plane of symmetry at x = {q[j, 0]:.6g} "
                        "(meets its mirror image there)")
-        for j in np.flatnonzero(buried):
-            log.append(f"{inter.name}: lofting line {j + 1} enters {body.name} only where no "
-                       "surface is taken (a joint station's step, an open end): its end on "
-                       f"the plane of symmetry, x = {q[j, 0]:.6g}, lies inside {body.name}")
+        _refuse_buried(wing, body, inter, missed, q)
     return LineEnds(pts, theta, u, missed, above, tuple(log))
+
+
+def _refuse_buried(wing, body, inter, missed, q):
+    """A line "missing" the body whose end Q on the plane of symmetry lies inside it entered
+    the body where it has no surface to meet: the face of a step at a joint station that two
+    segments repeat with different sections, or an open end. Continued to Q it would run
+    through the body's inside (and a fillet there would lie in it): refused (issue 11),
+    naming the line and the step's station."""
+    size = 1e-9 * max(float(body.length), 1.0)
+    distance = body.radial_error if hasattr(body, "radial_error") else body.signed_distance
+    buried = missed & (distance(np.where(missed[:, None], q, 0.0)) < -size)
+    if not buried.any():
+        return
+    j = int(np.argmax(buried))
+    line = wing.lofting_lines(inter.side)[j]
+    lo, hi = min(line[:, 0].min(), q[j, 0]), max(line[:, 0].max(), q[j, 0])
+    x = np.asarray(body.x_global, float)
+    steps = [float(v) for v in x[1:][(x[1:] == x[:-1])] if lo <= v <= hi]
+    where = (f"through the face of the step at x = {steps[0]:.6g}, where two fuselage "
+             "segments repeat the station with different sections" if steps else
+             "through an open end")
+    raise GeometryError(f"{inter.side} lofting line {j + 1} enters {body.name} only "
+                        f"{where}, which is no surface juncture intersects: continued to the "
+                        f"plane of symmetry it would run inside {body.name} (x = "
+                        f"{q[j, 0]:.6g}). Give both segments the same section at the joint, "
+                        f"or move the wing so that the line meets {body.name}'s surface",
+                        wing.name)
 
 
 def ended_lines(lines, ends, rows):

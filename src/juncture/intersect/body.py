@@ -135,6 +135,8 @@ def intersect_body(wing: WingLike, body, side="upper", samples_per_section=None,
     of the error (the closed bracket keeps a residual of the step's size), the search goes on
     inboard of it, and the line is reported as missing unless it meets the surface proper
     further inboard (the same rule as for an open end; :func:`.rays.find_crossings`, Notes).
+    :func:`juncture.misses.line_ends` then refuses a missing line whose end on the plane of
+    symmetry lies inside the body (it entered through such a face).
     The bracketing's Lipschitz screening holds off such steps: a line that dips into the
     body only within a step's height of the joint may be seen as missing it.
     """
