@@ -157,7 +157,13 @@ def _fillets(text, kind, opts):
 
 def check_arbitrary_fillets(text, desc, kind="cubic", opts=None):
     opts = opts or {"theta_u": np.radians(20.0), "end": "dy", "end_value": 0.25}
-    cfg, sides = _fillets(text, kind, opts)
+    try:
+        cfg, sides = _fillets(text, kind, opts)
+    except jc.GeometryError as exc:
+        # refused: a line entering only through a joint step's face (test_complete_misses)
+        assert "enters body only through the face of the step" in str(exc), str(exc)
+        assert desc["joints"] == "repeated" and desc["segments"] > 1
+        return
     length = desc["length"]
     refs = references(desc)
     wing_ref, body_ref = refs["wing"], refs["body"]

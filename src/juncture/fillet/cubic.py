@@ -510,6 +510,8 @@ class _Construction:
 
 #: Points along each line where a fillet is checked against the surfaces.
 _SAMPLES = 33
+#: Shares of theta_u the safety net tries first (:func:`_safety_net`).
+_GRID = 8
 
 
 def _safety_net(con, wing, side, body, I, check, phi, log):
@@ -531,7 +533,15 @@ def _safety_net(con, wing, side, body, I, check, phi, log):
     bad = check & ~clear(con.finish(con.geometry(phi))[4], check)
     if not bad.any():
         return phi
-    lo, hi = np.zeros(con.m), np.ones(con.m)
+    # The first share of phi that is not clear, not any one: a grid first, then bisection
+    # in the first cell that fails (where the clear shares are not one interval, bisection
+    # over all of [0, 1] lands on one boundary or another as the geometry moves a little).
+    hi = np.ones(con.m)
+    for k in range(_GRID - 1, 0, -1):
+        share = k / _GRID
+        ok = clear(con.finish(con.geometry(np.where(bad, share * phi, phi)))[4], bad)
+        hi = np.where(bad & ~ok, share, hi)
+    lo = hi - 1.0 / _GRID
     for _ in range(20):
         mid = 0.5 * (lo + hi)
         ok = clear(con.finish(con.geometry(np.where(bad, mid * phi, phi)))[4], bad)

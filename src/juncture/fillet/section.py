@@ -173,8 +173,8 @@ class PolylineFrame(_Frame):
         direction would jump into the section as B crosses them: a convex vertex behind B
         (away from I) and a concave one ahead of it. Each such vertex within h of B (along
         the section) turns the direction by its turn angle times 1 - distance / h, h =
-        :data:`ZONE` times the longer of its two pieces or the section's median piece,
-        whichever is shorter; so at the vertex the direction is
+        :data:`ZONE` times the longer of its two pieces or the section's median piece (of
+        those longer than a thousandth of it), whichever is shorter; so at the vertex the direction is
         already the next piece's. It is therefore a continuous function of B (a fillet on a
         polyline section moves continuously with the geometry, as keep_area's iteration and
         a design study need, also across the near-duplicate vertices of a section blended
@@ -193,15 +193,21 @@ class PolylineFrame(_Frame):
         idx = np.where(length > 0, np.arange(length.shape[1]), 0)
         np.maximum.accumulate(idx, axis=1, out=idx)
         angle = np.take_along_axis(angle, idx, axis=1)
-        angle = np.where(np.isnan(angle), np.nanmax(np.where(length > 0, angle, -np.inf),
-                                                     axis=1, keepdims=True), angle)
+        first = np.nanmax(np.where(length > 0, angle, -np.inf), axis=1, keepdims=True)
+        angle = np.where(np.isnan(angle), np.where(np.isfinite(first), first, 0.0), angle)
         turn = (np.diff(angle, axis=1) + np.pi) % (2 * np.pi) - np.pi   # at vertices 1..M-2
         sigma = np.concatenate([np.zeros((len(x), 1)), np.cumsum(length, axis=1)], axis=1)
         rows = np.arange(len(x))
         t = np.clip((np.linalg.norm(b.point(x, s)[:, 1:] - sec[rows, j], axis=1)
                      / np.maximum(length[rows, j], 1e-300)), 0.0, 1.0)
         at = sigma[rows, j] + t * length[rows, j]               # B's arc length
-        median = np.nanmedian(np.where(length > 1e-9 * sigma[:, -1:], length, np.nan), axis=1)
+        # the median piece, of those longer than a thousandth of the section (a section
+        # blended between two stations has near-duplicate vertices; a point section none)
+        real = length > 1e-3 * sigma[:, -1:]
+        ordered = np.sort(np.where(real, length, np.inf), axis=1)
+        middle = np.maximum(real.sum(axis=1) - 1, 0)[:, None] // 2
+        median = np.take_along_axis(ordered, middle, axis=1)[:, 0]
+        median = np.where(np.isfinite(median), median, 0.0)
         h = ZONE * np.minimum(median[:, None], np.maximum(length[:, :-1], length[:, 1:]))
         vertex = sigma[:, 1:-1]
         behind = np.where(up[:, None], vertex <= at[:, None], vertex >= at[:, None])
@@ -248,7 +254,9 @@ class PolylineFrame(_Frame):
 
     def wedge(self, direction, x, p, sign):
         sign = np.broadcast_to(np.asarray(sign, float), np.shape(p))
-        t = self._along(x, p, sign > 0) * sign[:, None]  # towards the fillet side
+        # towards the fillet side, turned outward near a vertex as at a start (continuous
+        # in I, and the smaller wedge there)
+        t = self._up(x, p, sign > 0) * sign[:, None]
         phi = np.pi - sign * (np.arctan2(t[:, 1], t[:, 0])
                               - np.arctan2(direction[:, 1], direction[:, 0]))
         return (phi + np.pi) % (2 * np.pi) - np.pi
