@@ -174,12 +174,12 @@ class PolylineFrame(_Frame):
         (away from I) and a concave one ahead of it. Each such vertex within h of B (along
         the section) turns the direction by its turn angle times 1 - distance / h, h =
         :data:`ZONE` times the longer of its two pieces or the section's median piece (of
-        those longer than a thousandth of it), whichever is shorter; so at the vertex the direction is
-        already the next piece's. It is therefore a continuous function of B (a fillet on a
-        polyline section moves continuously with the geometry, as keep_area's iteration and
-        a design study need, also across the near-duplicate vertices of a section blended
-        between two stations), and never points into the section: it is B's own piece's
-        direction turned outward by at most the turns within h.
+        those longer than a thousandth of it), whichever is shorter; so at the vertex the
+        direction is already the next piece's. It is therefore a continuous function of B
+        (a fillet on a polyline section moves continuously with the geometry, as keep_area's
+        iteration and a design study need, also across the near-duplicate vertices of a
+        section blended between two stations), and never points into the section: it is B's
+        own piece's direction turned outward by at most the turns within h.
         """
         b = self.body
         x = np.asarray(x, float)
