@@ -144,15 +144,17 @@ def _refuse_buried(wing, body, inter, missed, q):
     lo, hi = min(line[:, 0].min(), q[j, 0]), max(line[:, 0].max(), q[j, 0])
     x = np.asarray(body.x_global, float)
     steps = [float(v) for v in x[1:][(x[1:] == x[:-1])] if lo <= v <= hi]
-    where = (f"through the face of the step at x = {steps[0]:.6g}, where two fuselage "
-             "segments repeat the station with different sections" if steps else
-             "through an open end")
+    if steps:
+        where = (f"through the face of the step at x = {steps[0]:.6g}, where two fuselage "
+                 "segments repeat the station with different sections")
+        change = "Give both segments the same section at the joint"
+    else:
+        where, change = "through an open end", f"Close {body.name}'s end"
     raise GeometryError(f"{inter.side} lofting line {j + 1} enters {body.name} only "
                         f"{where}, which is no surface juncture intersects: continued to the "
                         f"plane of symmetry it would run inside {body.name} (x = "
-                        f"{q[j, 0]:.6g}). Give both segments the same section at the joint, "
-                        f"or move the wing so that the line meets {body.name}'s surface",
-                        wing.name)
+                        f"{q[j, 0]:.6g}). {change}, or move the wing so that the line meets "
+                        f"{body.name}'s surface", wing.name)
 
 
 def ended_lines(lines, ends, rows):
