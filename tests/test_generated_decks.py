@@ -300,9 +300,16 @@ def test_slow_intersection_points_lie_on_fuselages_and_pods_off_gaps_steps_and_e
 @settings(max_examples=300, **SLOW)
 @given(decks())
 def test_slow_every_generated_deck_completes_without_a_fillet(example):
+    text, desc = example
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        jc.complete(read_text(example[0]))
+        try:
+            jc.complete(read_text(text))
+        except jc.GeometryError as exc:
+            # the one refusal such a deck deserves: a lofting line that enters the fuselage
+            # only through the face of a step between two segments (test_complete_misses)
+            assert "enters body only through the face of the step" in str(exc), str(exc)
+            assert desc["joints"] == "repeated" and desc["segments"] > 1
 
 
 @pytest.mark.slow

@@ -88,7 +88,8 @@ def _start_excess(poly, q, v, tol):
     """How far [rad] the start direction v (2,) of a cubic fillet at q lies outside what it
     may be: the direction of the section's piece through q (either sense), turned outward
     (never into the section) by at most the turn angles of the vertices within a quarter
-    of the section's median piece from q along the section (where the direction turns
+    of the section's median piece (of those longer than a thousandth of the half-section)
+    from q along the section (where the direction turns
     from one piece's to the next one's, so that it is continuous in q). 0 where it holds."""
     whole = np.vstack([poly[::-1] * [-1.0, 1.0], poly])
     keep = np.concatenate([[True], np.hypot(*np.diff(whole, axis=0).T) > 0])
@@ -98,8 +99,8 @@ def _start_excess(poly, q, v, tol):
     unit = d / length[:, None]
     cum = np.concatenate([[0.0], np.cumsum(length)])
     turn = np.abs((np.diff(np.arctan2(unit[:, 1], unit[:, 0])) + np.pi) % (2 * np.pi) - np.pi)
-    reach = 0.3 * np.median(np.hypot(*np.diff(poly, axis=0).T)[
-        np.hypot(*np.diff(poly, axis=0).T) > 1e-9 * cum[-1]])
+    pieces = np.hypot(*np.diff(poly, axis=0).T)
+    reach = 0.3 * np.median(pieces[pieces > 1e-3 * pieces.sum()])
     v = v / np.linalg.norm(v)
     t = np.clip(((q - a) * d).sum(1) / length ** 2, 0.0, 1.0)
     best = np.inf
