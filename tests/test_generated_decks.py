@@ -21,12 +21,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import HealthCheck, Phase, example, given, settings
 
 import juncture as jc
 from tests.deckgen import (
     FAMILIES,
     components_differ,
+    deck_from_seed,
     decks,
     empennage_decks,
     intersection_offsets,
@@ -187,11 +188,17 @@ def test_intersection_points_lie_on_arbitrary_fuselages_as_juncture_models_them(
 
 @settings(max_examples=40, **FAST)
 @given(empennage_decks(canards="canard+tail", section="arbitrary"))
+# Twin fins standing partly on the fuselage, partly on (or through) a tail: the fuselage's
+# line trimmed the fins' tips, so the root kept its input points inside the fuselage
+# (draws 68 and 111 of tools/survey_decks.py's draw_decks(300, seed=8084), up to 0.011 L).
+@example(deck_from_seed(71))
+@example(deck_from_seed(99538))
 def test_canards_tails_and_fins_keep_the_part_outside_the_fuselage(example):
     """Every network of a canard, tail or fin that meets the fuselage lies outside it (the
     fuselage's own signed distance), however deep its root is buried: a canard whose root
     lies deep in a wide fuselage meets it nearer its tip than its root, and once kept the
-    buried part (up to 0.035 L inside on 4 of 60 generated airplanes)."""
+    buried part (up to 0.035 L inside on 4 of 60 generated airplanes). A fin's networks do
+    not enter a canard or tail either (the deck's own surfaces, tests.deckgen)."""
     text, desc = example
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -200,12 +207,32 @@ def test_canards_tails_and_fins_keep_the_part_outside_the_fuselage(example):
         except jc.JunctureError:
             return
     body = geo.configuration["body"]
+    refs = references(desc)
+    surfaces = [refs[n] for n, c in desc["components"].items() if c["kind"] in ("canard", "tail")]
     for name, comp in desc["components"].items():
         if comp["kind"] in ("canard", "tail", "fin") and "body" in comp.get("touches", ()):
             for key, net in geo.networks.items():
                 if key.startswith(name + " "):
-                    depth = -body.signed_distance(np.asarray(net)).min() / desc["length"]
+                    net = np.asarray(net).reshape(-1, 3)
+                    depth = -body.signed_distance(net).min() / desc["length"]
                     assert depth <= 1e-6, (key, depth)
+                    if comp["kind"] == "fin":
+                        for ref in surfaces:
+                            depth = ref.depth(net).max(initial=0.0) / desc["length"]
+                            assert depth <= 1e-6, (key, depth)
+
+
+def test_a_fin_line_entering_only_through_a_joint_step_is_refused_by_name():
+    """A twin fin whose lofting line enters the fuselage only through the face of a step
+    between two segments (draw 19 of draw_decks(300, seed=8084)) kept its input root point,
+    0.011 L inside the fuselage: refused, naming the fin, its line and the step's station."""
+    text, _ = deck_from_seed(2167)
+    with warnings.catch_warnings(), pytest.raises(jc.GeometryError) as err:
+        warnings.simplefilter("ignore")
+        jc.complete(read_text(text))
+    msg = str(err.value)
+    assert msg.startswith("fin 1: inboard lofting line 2 enters body only through the face "
+                          "of the step at x = 204.5"), msg
 
 
 @settings(max_examples=30, **FAST)

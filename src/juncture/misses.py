@@ -140,21 +140,29 @@ def _refuse_buried(wing, body, inter, missed, q):
     if not buried.any():
         return
     j = int(np.argmax(buried))
-    line = wing.lofting_lines(inter.side)[j]
-    lo, hi = min(line[:, 0].min(), q[j, 0]), max(line[:, 0].max(), q[j, 0])
-    x = np.asarray(body.x_global, float)
+    refuse_buried_line(wing, body, inter.side, j, wing.lofting_lines(inter.side)[j], q[j],
+                       "continued to the plane of symmetry")
+
+
+def refuse_buried_line(wing, host, side, j, line, point, kept="kept as it is"):
+    """Raise the GeometryError for lofting line ``j`` of ``wing``'s ``side`` that meets no
+    surface of ``host`` but whose end ``point`` lies inside it: for a body, the step at a
+    joint station between the line's x range and the point's, else its open end."""
+    lo, hi = min(line[:, 0].min(), point[0]), max(line[:, 0].max(), point[0])
+    x = np.asarray(getattr(host, "x_global", ()), float)
     steps = [float(v) for v in x[1:][(x[1:] == x[:-1])] if lo <= v <= hi]
-    if steps:
+    if not hasattr(host, "signed_distance"):
+        where, change = "through a face juncture does not model", "Change its end"
+    elif steps:
         where = (f"through the face of the step at x = {steps[0]:.6g}, where two fuselage "
                  "segments repeat the station with different sections")
         change = "Give both segments the same section at the joint"
     else:
-        where, change = "through an open end", f"Close {body.name}'s end"
-    raise GeometryError(f"{inter.side} lofting line {j + 1} enters {body.name} only "
-                        f"{where}, which is no surface juncture intersects: continued to the "
-                        f"plane of symmetry it would run inside {body.name} (x = "
-                        f"{q[j, 0]:.6g}). {change}, or move the wing so that the line meets "
-                        f"{body.name}'s surface", wing.name)
+        where, change = "through an open end", f"Close {host.name}'s end"
+    raise GeometryError(f"{side} lofting line {j + 1} enters {host.name} only "
+                        f"{where}, which is no surface juncture intersects: {kept} it would "
+                        f"run inside {host.name} (x = {point[0]:.6g}). {change}, or move "
+                        f"{wing.name} so that the line meets {host.name}'s surface", wing.name)
 
 
 def ended_lines(lines, ends, rows):

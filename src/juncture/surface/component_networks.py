@@ -61,18 +61,19 @@ def _at_root(wing, inters, others, hosts=None):
     One line: the end whose section lies inside the component met (``hosts``: name to
     component, those with a ``signed_distance``), else the end its points are nearer. A
     canard whose root is buried deep in a wide fuselage meets it nearer its tip, and still
-    loses its root. Several (a pylon between its nacelle and the wing): the line nearest the
-    root trims the root and the others the tip, however near the root the wing's line lies.
+    loses its root. Several: where each trims the root by that test, all do (a fin standing
+    partly on the fuselage, partly on or through a tail); else the line nearest the root
+    trims the root and the others the tip (a pylon between its nacelle and the wing, however
+    near the root the wing's line lies).
     """
     u = np.array([_mean_u(inter, others[i] if i < len(others) else None)
                   for i, inter in enumerate(inters)])
     u = np.where(np.isfinite(u), u, 0.0)
-    if len(u) < 2:
-        out = []
-        for inter, v in zip(inters, u):
-            buried = _buried_end(wing, inter, hosts or {})
-            out.append(bool(v < 0.5 * (wing.n_sections - 1)) if buried is None else buried)
-        return out
+    buried = [_buried_end(wing, inter, hosts or {}) for inter in inters]
+    ends = [bool(v < 0.5 * (wing.n_sections - 1)) if b is None else b
+            for v, b in zip(u, buried)]
+    if len(u) < 2 or all(ends):
+        return ends
     return [bool(i == int(np.argmin(u))) for i in range(len(u))]
 
 
@@ -102,18 +103,58 @@ def _inside_wing(wing, p):
     return inside & (t > np.minimum(up, low)) & (t < np.maximum(up, low))
 
 
-def _end_line(wing, side, inter, at_root, log):
+def _end_line(wing, side, inters, at_root, log, hosts):
+    """The line that trims one end of ``wing``'s ``side`` surface, and its span parameters.
+
+    Several intersections at the same end (a fin standing partly on the fuselage, partly on
+    a tail): each lofting line ends where it leaves the last component met going from the
+    other end (the largest u at the root, the smallest at the tip). A line that meets none
+    keeps its input end point (a warning), unless that point lies inside a component met:
+    the line entered it where there is no surface to meet (refused, see ``_refuse_buried``).
+    """
     lines = wing.lofting_lines(side)
-    missed = ~inter.found
-    fallback = lines[:, 0] if at_root else lines[:, -1]
-    pts = np.where(missed[:, None], fallback, inter.points)
-    u = np.where(missed, 0.0 if at_root else wing.n_sections - 1.0, inter.u)
+    pts = np.full((lines.shape[0], 3), np.nan)
+    u = np.full(lines.shape[0], np.nan)
+    for inter in inters:
+        v = np.asarray(inter.u, float)
+        take = np.asarray(inter.found, bool) & ~((u >= v) if at_root else (u <= v))
+        pts[take], u[take] = np.asarray(inter.points, float)[take], v[take]
+    missed = np.isnan(u)
+    end = 0 if at_root else -1
+    pts[missed], u[missed] = lines[missed, end], (0.0 if at_root else wing.n_sections - 1.0)
+    names = " and ".join(inter.name for inter in inters)
+    if missed.any():
+        _refuse_buried(wing, side, inters, pts, missed, hosts)
     for j in np.flatnonzero(missed):
-        msg = (f"{inter.name}: lofting line {j + 1} never meets the other component; its input "
+        msg = (f"{names}: lofting line {j + 1} never meets the other component"
+               f"{'s' if len(inters) > 1 else ''}; its input "
                f"{'root' if at_root else 'tip'} point is kept")
         log.append(msg)
         warnings.warn(msg, JunctureWarning, stacklevel=3)
     return pts, u
+
+
+def _refuse_buried(wing, side, inters, pts, missed, hosts):
+    """A line meeting none of the components at its end, whose input end point lies inside
+    one of them, entered it where it has no surface to meet (the face of a step between two
+    fuselage segments, an open end): kept, the network would run inside it (issue 11)."""
+    from ..misses import refuse_buried_line
+
+    for inter in inters:
+        host = hosts.get(inter.name.split("/", 1)[1].rsplit(" ", 1)[0])
+        if hasattr(host, "signed_distance"):
+            size = 1e-9 * max(float(host.length), 1.0)
+            inside = missed & (host.signed_distance(np.where(missed[:, None], pts, 0.0))
+                               < -size)
+        elif hasattr(host, "thickness_axis"):
+            inside = missed & _inside_wing(host, np.where(missed[:, None], pts, 0.0))
+        else:
+            continue
+        if inside.any():
+            j = int(np.argmax(inside))
+            refuse_buried_line(wing, host, side_label(wing, side), j,
+                               wing.lofting_lines(side)[j], pts[j],
+                               "with its input end point kept")
 
 
 def trimmed_networks(wing, side_inters, log, hosts=None):
@@ -140,12 +181,15 @@ def trimmed_networks(wing, side_inters, log, hosts=None):
         sec = wing.section_points(side)  # (n_sections, n_stations, 3)
         first, last = None, None
         lo, hi = -np.inf, np.inf
-        for inter, at_root in zip(inters, _at_root(wing, inters, others, hosts)):
-            pts, u = _end_line(wing, side, inter, at_root, log)
-            if at_root:
-                first, lo = pts, max(lo, float(np.max(u)))
-            else:
-                last, hi = pts, min(hi, float(np.min(u)))
+        roots = _at_root(wing, inters, others, hosts)
+        at_root = [inter for inter, r in zip(inters, roots) if r]
+        at_tip = [inter for inter, r in zip(inters, roots) if not r]
+        if at_root:
+            first, u = _end_line(wing, side, at_root, True, log, hosts or {})
+            lo = float(np.max(u))
+        if at_tip:
+            last, u = _end_line(wing, side, at_tip, False, log, hosts or {})
+            hi = float(np.min(u))
         k = np.arange(wing.n_sections)
         keep = sec[(k > lo + 1e-9) & (k < hi - 1e-9)]
         parts = ([first[None]] if first is not None else []) + [keep] + \
