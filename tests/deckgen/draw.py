@@ -587,6 +587,15 @@ def _surface_part(b, kind, wing, ordinates):
     sweep = math.radians(d.uniform(0.0, 60.0))
     dihedral = math.radians(d.uniform(-10.0, 15.0))
     taper = d.uniform(0.25, 1.0)
+    for _ in range(4):
+        # The tip clear of the fuselage (a canard or tail whose tip stays inside a wide
+        # fuselage is no airplane's): span added until it is.
+        x_tip = x_in + semispan * math.tan(sweep) + np.linspace(0.0, chord * taper, 15)
+        z_tip = z_in + semispan * math.tan(dihedral)
+        reach = float(fus.half_width(x_tip, z_tip).max()) + 0.1 * R - y_in
+        if semispan >= reach:
+            break
+        semispan = reach
     le = _q([[x_in, y_in, z_in], [x_in + semispan * math.tan(sweep), y_in + semispan,
                                   z_in + semispan * math.tan(dihedral)]])
     chords = _q([chord, chord * taper])

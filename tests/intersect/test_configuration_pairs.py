@@ -374,3 +374,26 @@ def test_a_fin_on_the_fuselage_is_not_paired_with_the_wing_inside_it():
         assert below.found.all() and inter.found.all()
         assert np.all(below.u < inter.u)
         assert np.all(body.radial_error(below.points) < 0)
+
+
+def test_a_canard_whose_tip_stays_inside_the_fuselage_is_refused_by_name():
+    """A canard whose tip lies partly inside a wide fuselage (tests/data/generated/refused/
+    canard_tip_inside_fuselage.inp) was taken for one that does not touch it: its whole
+    network was kept, 0.048 L deep inside the fuselage. The search from the tip cannot start
+    inside the body, so the pair is refused, naming the canard and its line; a pod off the
+    centre line may still hold a tip (a tip tank) without a refusal."""
+    from tests.support import DATA
+
+    cfg = jc.read(DATA / "generated" / "refused" / "canard_tip_inside_fuselage.inp")
+    # Independent of juncture's intersection code: the canard's tip points lie on both
+    # sides of the fuselage's surface (its own signed distance).
+    tip = np.concatenate([cfg["canard 1"].lofting_lines(s)[:, -1] for s in ("upper", "lower")])
+    depth = cfg["body"].signed_distance(tip)
+    assert depth.min() < 0 < depth.max()
+    with warnings.catch_warnings(), pytest.raises(jc.GeometryError) as err:
+        warnings.simplefilter("ignore")
+        find_intersections(cfg)
+    msg = str(err.value)
+    assert msg.startswith("canard 1, station 2: the tip of upper lofting line 3 lies inside "
+                          "body"), msg
+    assert "so that its tip is outside body" in msg

@@ -176,9 +176,12 @@ def _intersect(wing, body, sides, samples_per_section, hints):
     if np.any(tip_inside):
         j = int(np.argmax(tip_inside))
         side = sides[j // wing.n_stations]
-        raise GeometryError(f"the tip of {side} lofting line {j % wing.n_stations + 1} lies "
-                            f"inside {body.name}: the surface never leaves the body",
+        exc = GeometryError(f"the tip of {side} lofting line {j % wing.n_stations + 1} lies "
+                            f"inside {body.name}: the surface never leaves the body (move or "
+                            f"extend {wing.name} so that its tip is outside {body.name})",
                             wing.name, wing.n_sections)
+        exc.tip_inside = True  # the pair touches: never taken for one that does not
+        raise exc
     out = []
     m = wing.n_stations
     # A lofting line both surfaces share (a sharp leading or trailing edge) takes the first

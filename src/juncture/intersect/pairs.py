@@ -130,7 +130,11 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
                 pair = Pair(a.name, b.name, role)
                 try:
                     res = intersect_pair(cfg, pair)
-                except GeometryError:
+                except GeometryError as exc:
+                    # A surface whose tip lies inside a fuselage never leaves it (a pod
+                    # off the centre line may hold a tip: a tip tank is not refused).
+                    if getattr(exc, "tip_inside", False) and not getattr(b, "mirrored", True):
+                        raise
                     continue
                 if any(r.found.any() for r in res):
                     if role == "body":
