@@ -70,7 +70,7 @@ def test_keep_area_on_the_example():
 def test_keep_area_short_of_its_tolerance_keeps_its_best_iterate_or_says_how_far(monkeypatch):
     """An iteration that cannot reach the tolerance (1e-17, below the fillets' own
     precision) returns its best iterate with a warning naming the residual once that is
-    1e-7 or less; one stopped far from it (a single iteration) raises ConvergenceError."""
+    1e-6 or less; one stopped far from it (a single iteration) raises ConvergenceError."""
     import juncture.completion as completion
 
     real = completion._keep_area

@@ -67,7 +67,7 @@ class Compensation:
 
 #: Largest relative residual of an iteration that stops short of the tolerance that is
 #: still returned (its best iterate, with a warning) instead of raising.
-_ACCEPT = 1e-7
+_ACCEPT = 1e-6
 #: Substitutions in a row (the Newton model failing) after which the nodes are re-set.
 _RENODE_AFTER = 5
 
@@ -204,7 +204,7 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
         An unknown ``compensate``; the fillets need more area than the body has.
     ConvergenceError
         The residual does not reach ``tolerance`` in ``max_iterations``, and the best
-        iterate's is above 1e-7 (at or below it, that iterate is returned with a
+        iterate's is above 1e-6 (at or below it, that iterate is returned with a
         :class:`JunctureWarning`).
 
     Notes
@@ -241,9 +241,11 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
     stalled = 0  # Newton models that failed in a row
     best = None  # the iterate of least worst residual
     x = None  # the stations of the last iterate
+    seen = []  # the last iterates' intersections (which lines met the body)
     for it in range(1, max_iterations + 1):
         parts = initial if (it == 1 and initial is not None) else \
             _fillets_on(make_fillets, current, previous, warm, it, x)
+        seen = seen[-(_WINDOW - 1):] + [parts[:2]]
         if compensate == "fillet":
             # TM-4406: the fillets alone.
             x, only = fillet_added_area(current, *parts[2:], *parts[:2])
@@ -306,7 +308,13 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
             except GeometryError:
                 # A Newton step that asks more than the body has: the paper's substitution.
                 step, history = None, []
-        stalled = 0 if step is not None or len(history) < 2 else stalled + 1
+        # Count the Newton models that failed, not the substitutions that start a model
+        # again: a residual that edges up and down resets the history every other step,
+        # and the nodes must still be re-set when the model keeps failing in between.
+        if step is not None:
+            stalled = 0
+        elif len(history) >= 2:
+            stalled += 1
         t = _feasible(reduction, t, f if step is None else step)
         current = reduction.body(t)
         # Warm starts are safe while the body only shrinks (nothing new outboard to meet).
@@ -320,7 +328,54 @@ def keep_area(body, make_fillets, tolerance=1e-9, max_iterations=150, sides=2, e
                       f"(x = {where}), not {tolerance:g}, after {max_iterations} iterations; "
                       "the best iterate is kept", JunctureWarning, stacklevel=3)
         return best
+    why = _grazing(best, seen, body) or _crowded(best, body) or (
+        "the added area there jumps as the body shrinks; a smaller theta_u, e.g. 10 deg, "
+        "usually settles it")
     raise ConvergenceError(f"area compensation did not reach {tolerance:g} in {max_iterations} "
-                           f"iterations (worst residual {worst:.3g} at x = {where}: the added "
-                           "area there jumps as the body shrinks; a smaller theta_u, e.g. 10 "
-                           "deg, usually settles it)", body.name)
+                           f"iterations (worst residual {worst:.3g} at x = {where}: {why})",
+                           body.name)
+
+
+#: Iterates over which :func:`_grazing` looks for a line that meets the body and misses it.
+_WINDOW = 30
+
+
+def _grazing(best, seen, body):
+    """Why the iteration cannot settle when the worst station's lofting line meets the body
+    on some of the last iterates and misses it on others (``seen``: their intersections,
+    upper and lower): it grazes the body, and its fillet (and the root it uncovers) comes
+    and goes as the body shrinks by a little, so no re-designed body keeps the area there;
+    else None."""
+    w = int(np.argmax(np.asarray(best.residual, float)))
+    for k in range(2):
+        found = np.array([np.asarray(pair[k].found, bool)[w] for pair in seen])
+        if found.any() and not found.all():
+            return (f"{seen[-1][k].name} lofting line {w + 1} grazes {body.name}: as the "
+                    "body shrinks by a little the line meets it on some iterates and misses "
+                    "it on others, and its fillet comes and goes, so no re-designed body "
+                    "keeps the area there. Move the wing so that the line clearly meets or "
+                    "clearly misses the body, or do without keep_area")
+    return None
+
+
+#: Two stations nearer than this (relative to the body's length) are one cross-section.
+_SAME_X = 1e-3
+
+
+def _crowded(best, body):
+    """Why the iteration cannot settle when the worst station shares its cross-section with
+    another: two lofting lines meet the body at (nearly) the same x, where the intersection
+    line turns back in x, and their fillets ask different areas of the one section there;
+    else None."""
+    x, res = np.asarray(best.x, float), np.asarray(best.residual, float)
+    w = int(np.argmax(res))
+    gap = np.abs(x - x[w])
+    gap[w] = np.inf
+    k = int(np.argmin(gap))
+    if not gap[k] <= _SAME_X * max(float(getattr(body, "length", 1.0)), 1e-300):
+        return None
+    return (f"the stations of lofting lines {min(w, k) + 1} and {max(w, k) + 1} lie at nearly "
+            f"the same x ({x[w]:.6g} and {x[k]:.6g}; the intersection line turns back in x "
+            "there), and their fillets ask different areas of that one cross-section "
+            "(TM-4406 compensates one fillet per station). Move the wing so that its "
+            "intersection runs aft along the chord, or do without keep_area")
