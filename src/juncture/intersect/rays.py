@@ -485,9 +485,18 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
     act = found.copy()
     start = None if hint is None else np.where(found, np.asarray(hint, float), np.nan)
     for round_ in range(max_jumps + 1):
-        if act.any():
-            iterations += _close(lines, error, a, b, fa, fb, act, rtol, max_iter, start, atol,
-                                 u, residual, grad)
+        todo = act.copy()
+        for _ in range(_OUTER_ROUNDS):
+            if not todo.any():
+                break
+            outer, f_outer = a.copy(), fa.copy()
+            iterations += _close(lines, error, a, b, fa, fb, todo, rtol, max_iter, start,
+                                 atol, u, residual, grad)
+            start = None
+            # A bracket can hold several sign changes (a root, a step's jump, another root)
+            # and its closure reach an inner root: the first crossing from the tip is wanted.
+            todo = _inner_root(lines, error, todo & (residual <= atol), outer, f_outer, u, a,
+                               b, fa, fb)
         start = None
         # A bracket that closes off the surface is a jump of the error, not a root.
         jump = act & ~(residual <= atol)
@@ -515,6 +524,34 @@ def find_crossings(lines, error, u_low, samples_per_section=None, rtol=1e-13, ma
     pts = polyline_points(lines, np.where(found, u, 0.0)[:, None])[:, 0]
     pts[~found] = np.nan
     return Crossings(u, pts, found, n_cross, iterations, residual, start_err, grad, jumps)
+
+
+#: Times a bracket is narrowed to an outer crossing it holds (:func:`_inner_root`).
+_OUTER_ROUNDS = 4
+#: Points between a root and its bracket's outer end where the error's sign is checked.
+_OUTER_SAMPLES = 16
+
+
+def _inner_root(lines, error, rows, outer, f_outer, u, a, b, fa, fb):
+    """Of the lines ``rows`` (bool) closed at a root u of the bracket whose outside end was
+    ``outer``, those with a point inside the surface between u and ``outer``: the root is
+    not the first from the tip. Their brackets become [outer, the outermost such point]
+    (in place); returns them (bool) to be closed again."""
+    r = np.flatnonzero(rows)
+    if not r.size:
+        return rows
+    k = np.arange(1, _OUTER_SAMPLES + 1) / (_OUTER_SAMPLES + 1)
+    us = outer[r, None] - k[None, :] * (outer[r] - u[r])[:, None]  # from outer inwards
+    e = _call(error, polyline_points(lines[r], us), r)
+    inside = e <= 0
+    hit = inside.any(axis=1)
+    first = np.argmax(inside, axis=1)
+    again = np.zeros_like(rows)
+    sel = r[hit]
+    again[sel] = True
+    a[sel], fa[sel] = outer[sel], f_outer[sel]
+    b[sel], fb[sel] = us[hit, first[hit]], e[hit, first[hit]]
+    return again
 
 
 def root_tolerance(*point_sets):
