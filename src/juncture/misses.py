@@ -144,7 +144,7 @@ def _refuse_buried(wing, body, inter, missed, q):
                        "continued to the plane of symmetry")
 
 
-def refuse_buried_line(wing, host, side, j, line, point, kept="kept as it is"):
+def refuse_buried_line(wing, host, side, j, line, point, kept):
     """Raise the GeometryError for lofting line ``j`` of ``wing``'s ``side`` that meets no
     surface of ``host`` but whose end ``point`` lies inside it: for a body, the step at a
     joint station between the line's x range and the point's, else its open end."""

@@ -77,11 +77,16 @@ def _at_root(wing, inters, others, hosts=None):
     return [bool(i == int(np.argmin(u))) for i in range(len(u))]
 
 
+def _host(inter, hosts):
+    """The component an intersection "a/b side" meets (b), from ``hosts``; None if absent."""
+    return hosts.get(inter.name.split("/", 1)[1].rsplit(" ", 1)[0])
+
+
 def _buried_end(wing, inter, hosts):
     """True when more of the root section's mean line lies inside the component ``inter``
     meets than of the tip section's, False for the reverse, None when it cannot tell (the
     same share, or a component without a signed distance)."""
-    host = hosts.get(inter.name.split("/", 1)[1].rsplit(" ", 1)[0])
+    host = _host(inter, hosts)
     mean = 0.5 * (wing.section_points("upper") + wing.section_points("lower"))[[0, -1]]
     if hasattr(host, "signed_distance"):
         inside = host.signed_distance(mean) < 0.0
@@ -141,7 +146,7 @@ def _refuse_buried(wing, side, inters, pts, missed, hosts):
     from ..misses import refuse_buried_line
 
     for inter in inters:
-        host = hosts.get(inter.name.split("/", 1)[1].rsplit(" ", 1)[0])
+        host = _host(inter, hosts)
         if hasattr(host, "signed_distance"):
             size = 1e-9 * max(float(host.length), 1.0)
             inside = missed & (host.signed_distance(np.where(missed[:, None], pts, 0.0))
