@@ -258,18 +258,23 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     from .surface.body_split import Boundary, boundary_from_points, forward, seam_gap, split_body
 
     ku, kl = forward(fu.start[:, 0]), forward(fl.start[:, 0])
-    ups = [Boundary(fu.start[ku, 0], fu.theta_start[ku], "wing", fu.start[ku])]
-    los = [Boundary(fl.start[kl, 0], fl.theta_start[kl], "wing", fl.start[kl])]
+    sharp = fu.kind == "none" and fl.kind == "none"   # rows end on the wing itself
+    ups = [Boundary(fu.start[ku, 0], fu.theta_start[ku], "wing", fu.start[ku],
+                    _exact(wing, body, "upper", fu.start) if sharp else None)]
+    los = [Boundary(fl.start[kl, 0], fl.theta_start[kl], "wing", fl.start[kl],
+                    _exact(wing, body, "lower", fl.start) if sharp else None)]
     fins, port = [], []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
             ups.append(boundary_from_points(body, up.points[forward(up.points[:, 0])],
-                                            comp.name))
+                                            comp.name, _exact(comp, body, "upper", up.points)))
             los.append(boundary_from_points(body, lo.points[forward(lo.points[:, 0])],
-                                            comp.name))
+                                            comp.name, _exact(comp, body, "lower", lo.points)))
         elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
-            fins.append(boundary_from_points(body, up.points, comp.name))
-            port.append(boundary_from_points(body, mirror_points(lo.points), comp.name))
+            fins.append(boundary_from_points(body, up.points, comp.name,
+                                             _exact(comp, body, "upper", up.points)))
+            port.append(boundary_from_points(body, mirror_points(lo.points), comp.name,
+                                             _exact(comp, body, "lower", lo.points, True)))
     # The same point count per cross-section, split so the spacing is even at the wing's
     # leading-edge station (TM-4607): the shares follow the arcs below and above theta_w.
     b_lo, b_hi, _ = body_range(body)
@@ -302,6 +307,18 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
                           "points": int(inter.found.sum()),
                           "max_gap": seam_gap(inter.points, nets[net])})
     return nets, seams
+
+
+def _exact(comp, body, side, points, mirrored=False):
+    """``exact(x)`` of a :class:`~juncture.surface.body_split.Boundary`: where ``comp``'s
+    ``side`` surface meets ``body`` in the planes x (its intersection ``points`` bracket
+    them; mirrored in y with ``mirrored``)."""
+    from .intersect.stations import plane_points
+
+    def exact(x):
+        pts = plane_points(comp, body, side, points, x)
+        return mirror_points(pts) if mirrored else pts
+    return exact
 
 
 def _refined(cfg, k):

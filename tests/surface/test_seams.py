@@ -82,3 +82,27 @@ def test_a_gap_between_two_networks_of_one_component_is_not_folded_shut():
     assert len(out) == len(tri)                             # untouched
     out_other, _ = split_seams(pts, tri, comp)              # two components: a seam
     assert len(out_other) > len(tri)
+
+
+def test_a_seam_curve_bending_past_the_lens_between_two_shared_points_closes():
+    """One side carries only the ends of an arc of 1 rad (its chord stands 12.8 % of its
+    length off the arc's middle, past the lens), the other four points between: the other
+    side's chain between the two shared points is taken into the chord's triangle (a
+    fuselage row ending on a wing's exact intersection between two of its chord stations)."""
+    coarse = np.array([0.0, 1.0])
+    fine = np.linspace(0.0, 1.0, 6)
+    pts, tri, comp = _two_sides(coarse, fine)
+    assert _seam_open_edges(pts, tri) > 0
+    out, _ = split_seams(pts, tri, comp)
+    assert _seam_open_edges(pts, out) == 0
+    report = check_mesh(pts, out)
+    assert report.misoriented_edges == 0 and report.nonmanifold_edges == 0
+
+
+def test_a_chain_far_off_the_edge_between_two_shared_points_stays_open():
+    """A chain farther than WIDE off the edge (an arc of 2.2 rad stands 29 % of its chord
+    off at its middle) is not taken: the loop is not closed by guesswork."""
+    fine = np.linspace(0.0, 2.2, 4)
+    pts, tri, comp = _two_sides(np.array([0.0, 2.2]), fine)
+    out, _ = split_seams(pts, tri, comp)
+    assert _seam_open_edges(pts, out) == _seam_open_edges(pts, tri) > 0

@@ -31,26 +31,51 @@ class Boundary:
     end there; a point off the body is where a wing line that misses the body ends
     (:mod:`juncture.misses`), and where its angle is the top (bottom) the row of the upper
     (lower) surface is empty: every point of it is that point.
+
+    ``exact(x)``, optional: (k, 3) the curve's exact points at stations x (NaN where it has
+    none; :func:`juncture.intersect.stations.plane_points`). Body stations between the
+    curve's points then end there (:func:`split_body`) instead of at the angle interpolated
+    between its points.
     """
 
-    def __init__(self, x, theta, name="", points=None):
+    def __init__(self, x, theta, name="", points=None, exact=None):
         order = np.argsort(x, kind="stable")
         self.x = np.asarray(x, float)[order]
         self.theta = np.asarray(theta, float)[order]
         self.name = name
         self.points = None if points is None else np.asarray(points, float)[order]
+        self.exact = exact
 
     def at(self, x):
         """Angle at stations x (linear between the boundary's points)."""
         return np.interp(x, self.x, self.theta)
 
 
-def boundary_from_points(body, points, name=""):
+def boundary_from_points(body, points, name="", exact=None):
     """A Boundary through points lying on ``body`` (NaN rows skipped)."""
     from ..intersect.body import _body_angle
 
     ok = np.all(np.isfinite(points), axis=1)
-    return Boundary(points[ok, 0], _body_angle(body, points[ok]), name, points[ok])
+    return Boundary(points[ok, 0], _body_angle(body, points[ok]), name, points[ok], exact)
+
+
+def _at_stations(body, region, xs):
+    """``region`` with its exact points (``region.exact``) at the stations ``xs`` that lie
+    between its first and last points, where it has them."""
+    from ..intersect.body import _body_angle
+
+    if region.exact is None or region.points is None or region.x.size < 2:
+        return region
+    inner = np.setdiff1d(xs[(xs > region.x[0]) & (xs < region.x[-1])], region.x)
+    if not inner.size:
+        return region
+    pts = region.exact(inner)
+    good = np.all(np.isfinite(pts), axis=1)
+    if not good.any():
+        return region
+    return Boundary(np.concatenate([region.x, inner[good]]),
+                    np.concatenate([region.theta, _body_angle(body, pts[good])]),
+                    region.name, np.concatenate([region.points, pts[good]]), region.exact)
 
 
 def forward(x):
@@ -117,6 +142,9 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     # points on that line the lower block does not have (an open seam between them).
     spans = [(r.x[0], r.x[-1]) for r in (*upper_regions, *lower_regions) if r.x.size]
     xu, xl = _shared_stations(xu, xl, spans)
+    upper_regions = [_at_stations(body, r, xu) for r in upper_regions]
+    lower_regions = [_at_stations(body, r, xl) for r in lower_regions]
+    fins = [_at_stations(body, f, xu) for f in fins]
     th_u = bounding_curve(xu, upper_regions, x_nose, x_end, side)
     th_l = bounding_curve(xl, lower_regions, x_nose, x_end, side)
     top = np.full(xu.size, top_value)
@@ -178,7 +206,7 @@ def _with_point(region, other, end):
     pick = slice(0, 1) if end == 0 else slice(-1, None)
     return Boundary(np.concatenate([region.x, other.x[pick]]),
                     np.concatenate([region.theta, other.theta[pick]]), region.name,
-                    np.concatenate([region.points, other.points[pick]]))
+                    np.concatenate([region.points, other.points[pick]]), region.exact)
 
 
 def _shared_stations(xu, xl, spans):

@@ -31,6 +31,12 @@ LENS = 0.05
 #: The lens for a point of the edge's own component: on the edge, to round-off.
 COLLINEAR = 1e-9
 
+#: A boundary edge between two shared points takes the other side's chain between them
+#: (at most WIDE_STEPS points, each within WIDE of the edge's length from it) when no point
+#: lies in its lens: the seam curve bends between this side's points (:func:`_wide_chains`).
+WIDE = 0.25
+WIDE_STEPS = 4
+
 
 def _boundary_edges(triangles):
     """(k, 2) directed boundary edges and (k,) the triangle each belongs to."""
@@ -116,6 +122,10 @@ def split_seams(vertices, triangles, component, lens=LENS):
     for a, b in edges.tolist():
         links.setdefault(a, set()).add(b)
         links.setdefault(b, set()).add(a)
+    taken = {v for cand in per_edge.values() for _, v in cand}
+    for e, chain in _wide_chains(vertices, edges, owner, component, touch, links,
+                                 per_edge, taken):
+        per_edge[e] = [(k, v) for k, v in enumerate(chain)]
     replaced, used = [], set()
     for e, cand in per_edge.items():
         (a, b), t = edges[e].tolist(), int(owner[e])
@@ -138,6 +148,48 @@ def split_seams(vertices, triangles, component, lens=LENS):
     new = [np.asarray(f, dtype=triangles.dtype).reshape(-1, 3) for _, f in replaced]
     parent = np.concatenate([keep] + [np.full(len(f), r[0]) for r, f in replaced])
     return np.concatenate([triangles[keep]] + new), parent
+
+
+def _wide_chains(vertices, edges, owner, component, touch, links, per_edge, taken):
+    """(edge, chain) for the boundary edges ``a -> b`` between two points shared with another
+    component that no lens point splits, where that component's boundary runs from ``a`` to
+    ``b`` through at most :data:`WIDE_STEPS` points of its own, each between ``a`` and ``b``
+    and within :data:`WIDE` of the edge's length from it.
+
+    A seam curve that bends between this side's sparse points (a fuselage row ending on the
+    wing's exact intersection in its own plane, between two of the wing's chord stations)
+    leaves such a loop: the other side's chain is the curve, this side's edge its chord.
+    """
+    out = []
+    for e, ((a, b), t) in enumerate(zip(edges.tolist(), owner.tolist())):
+        mine = int(component[t])
+        if e in per_edge or not (touch[a] - {mine}) or not (touch[b] - {mine}):
+            continue
+        chain = _other_chain(a, b, mine, touch, links)
+        if not chain or taken.intersection(chain):
+            continue
+        near, _, _ = _between(vertices[chain], vertices[a], vertices[b], WIDE)
+        if near.all():
+            out.append((e, chain))
+            taken.update(chain)
+    return out
+
+
+def _other_chain(a, b, mine, touch, links):
+    """The points of the boundary path from ``a`` to ``b`` (not the edge itself) through
+    points that only other components' boundaries touch, at most :data:`WIDE_STEPS` of
+    them; [] when there is none."""
+    for first in links.get(a, ()):
+        path, prev, v = [], a, first
+        while v != b and len(path) < WIDE_STEPS and mine not in touch.get(v, {mine}):
+            path.append(v)
+            step = [w for w in links.get(v, ()) if w != prev]
+            if len(step) != 1:
+                break
+            prev, v = v, step[0]
+        if v == b and path:
+            return path
+    return []
 
 
 def _on_path(a, b, chain, links):

@@ -1,0 +1,136 @@
+"""Where a wing-like surface meets a body in a given cross-section plane x = const.
+
+The fuselage blocks of the TM-4607 layout have a row at every body station, and inside a
+region (canard, wing, tail, fin) each row ends on the region's bounding curve. TM-4607
+interpolates that curve's angle linearly in x between the intersection points of the
+lofting lines; on a body whose section turns quickly beside the root (a high wing sitting on
+the fuselage's shoulder) the interpolated end lies well off the wing: 0.4 ft inside a
+generated high wing, whose lower surface then crossed the fuselage block. Here the row ends
+at the exact intersection in its own plane: the point of the wing's surface at the chord
+fraction whose lofting line meets the body at x = x0 (:func:`plane_points`), found by
+false position on the fraction between the two lofting lines that bracket x0, each trial
+line cut with the body by the same root finder as every other intersection
+(:func:`juncture.intersect.body.intersect_body`). The point lies on both surfaces to the
+root finder's precision, in its plane to :data:`XTOL` of the size.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["plane_points", "XTOL", "ON_BODY"]
+
+#: Largest distance of a point from its plane x = x0, share of the size.
+XTOL = 1e-12
+#: A bracketing point lies on the body when its residual is at most this share of the size
+#: (a lofting line that misses the body ends off it: no bracket there).
+ON_BODY = 1e-9
+#: Stations nearer a bracketing point than this share of the size keep the interpolation
+#: (the row would nearly repeat that point's).
+MARGIN = 1e-9
+MAX_ITER = 40
+
+
+def plane_points(wing, body, side, points, x):
+    """(len(x), 3) intersection points of ``wing``'s ``side`` surface with ``body`` in the
+    planes x = ``x``, NaN where a station does not lie strictly between the points of two
+    neighbouring lofting lines that both meet the body, x increasing from the first to the
+    second, or where the search fails (a trial line that misses the body).
+
+    Parameters
+    ----------
+    wing : WingLike
+        The component whose lofting lines gave ``points`` (one per chord station).
+    body : CircularBody or ArbitraryBody
+    side : {"upper", "lower"}
+    points : (n_stations, 3) float
+        Its intersection with ``body`` on that side, one point per lofting line (NaN, or
+        off the body, where a line misses it).
+    x : (k,) float
+        Body stations.
+    """
+    from .body import _error_function
+
+    x = np.asarray(x, float)
+    out = np.full((x.size, 3), np.nan)
+    p = np.asarray(points, float)
+    ok = np.all(np.isfinite(p), axis=1)
+    if x.size == 0 or ok.sum() < 2:
+        return out
+    size = float(np.ptp(p[ok], axis=0).max()) or 1.0
+    ok[ok] = np.abs(_error_function(body)(p[ok])) <= ON_BODY * size
+    a = np.flatnonzero(ok[:-1] & ok[1:])          # neighbouring lines, both on the body
+    b = a + 1
+    xa, xb = p[a, 0], p[b, 0]
+    pad = MARGIN * size
+    inside = (xa[None, :] + pad < x[:, None]) & (x[:, None] < xb[None, :] - pad)
+    rows = np.flatnonzero(inside.any(axis=1))
+    if not rows.size:
+        return out
+    j = np.argmax(inside[rows], axis=1)
+    f = wing.x_over_c / 100.0
+    x0 = x[rows]
+    solved = _false_position(wing, body, side, x0, f[a[j]], f[b[j]], xa[j] - x0, xb[j] - x0,
+                             XTOL * size)
+    out[rows] = solved
+    return out
+
+
+def _false_position(wing, body, side, x0, fa, fb, ga, gb, tol):
+    """(k, 3) points at the fractions where the cut's x equals ``x0`` (Illinois false
+    position between fa and fb, where x - x0 is ga < 0 and gb > 0); NaN where a trial line
+    misses the body or the search does not settle."""
+    out = np.full((x0.size, 3), np.nan)
+    act = np.arange(x0.size)
+    fa, fb, ga, gb = (np.array(v, float) for v in (fa, fb, ga, gb))
+    last = np.zeros(x0.size, int)      # which end was kept last time (-1 a, +1 b)
+    for _ in range(MAX_ITER):
+        if not act.size:
+            break
+        fm = (fa * gb - fb * ga) / (gb - ga)
+        fm = np.clip(fm, np.minimum(fa, fb), np.maximum(fa, fb))
+        pts = _cut(wing, body, side, fm)
+        gm = pts[:, 0] - x0
+        good = np.isfinite(gm)
+        done = good & (np.abs(gm) <= tol)
+        out[act[done]] = pts[done]
+        neg = good & ~done & (gm < 0)
+        pos = good & ~done & (gm > 0)
+        # Illinois: the end kept twice in a row has its value halved
+        gb = np.where(neg & (last == 1), 0.5 * gb, gb)
+        ga = np.where(pos & (last == -1), 0.5 * ga, ga)
+        fa, ga = np.where(neg, fm, fa), np.where(neg, gm, ga)
+        fb, gb = np.where(pos, fm, fb), np.where(pos, gm, gb)
+        last = np.where(neg, 1, np.where(pos, -1, last))
+        keep = good & ~done & (np.abs(fb - fa) > 1e-15)
+        act, x0 = act[keep], x0[keep]
+        fa, fb, ga, gb, last = fa[keep], fb[keep], ga[keep], gb[keep], last[keep]
+    return out
+
+
+def _cut(wing, body, side, fractions):
+    """(k, 3) the points where ``wing``'s lofting lines at chord ``fractions`` meet
+    ``body`` on ``side`` (NaN where one misses it)."""
+    from .body import intersect_body
+
+    want = np.asarray(fractions, float)
+    f = np.unique(np.concatenate([want, [0.0 if want.min() > 0.0 else 1.0]]))  # 2 at least
+    cut = intersect_body(_lines_at(wing, side, f), body, "upper")
+    rows = np.searchsorted(f, want)
+    return np.where(cut.found[rows, None], cut.points[rows], np.nan)
+
+
+def _lines_at(wing, side, f):
+    """A wing-like component whose lofting lines (both sides) are ``wing``'s ``side``
+    lofting lines at the chord fractions ``f`` (sorted): its sections' offsets are the
+    model's own section curves there (:meth:`~juncture.model.WingLike.point`), as a
+    camber line of zero thickness. (:meth:`~juncture.model.WingLike.with_chord_stations`
+    interpolates camber and thickness apart, a curve 1e-3 of the thickness off.)"""
+    from ..model import WingLike
+
+    span = wing.span_stations
+    axis = wing.thickness_axis
+    offsets = wing.point(span[:, None], f[None, :], side)[..., axis] - wing.le[:, None, axis]
+    zero = np.zeros_like(offsets)
+    return WingLike(wing.name, wing.kind, wing.le, wing.chord, 100.0 * f, zero, zero, offsets,
+                    wing.mirrored, wing.chordwise)

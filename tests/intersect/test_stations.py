@@ -1,0 +1,85 @@
+"""Where a wing meets a body in a cross-section plane (juncture.intersect.stations)."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import juncture as jc
+from juncture.intersect import intersect_body
+from juncture.intersect.stations import plane_points
+
+ROOT = Path(__file__).resolve().parents[2]
+TRANSPORT = ROOT / "examples" / "supersonic_transport.inp"
+SHOULDER = ROOT / "tests" / "data" / "generated" / "high_wing_on_the_fuselage_shoulder.inp"
+
+
+def wing_height(wing, side, p):
+    """The wing surface's thickness coordinate at the points' (x, span): the chord fraction
+    solved from x by bracketing on the model's own section point (not the intersection's
+    root finder)."""
+    out = []
+    for q in p:
+        span = q[wing.span_axis]
+        f = brentq(lambda f, s=span, x=q[0]: wing.point(s, f, side, extrapolate=True)[0] - x,
+                   -0.5, 1.5, xtol=1e-15)
+        out.append(wing.point(span, f, side, extrapolate=True)[wing.thickness_axis])
+    return np.array(out)
+
+
+@pytest.mark.parametrize("side", ["upper", "lower"])
+def test_points_lie_in_their_plane_on_the_deck_circle_and_on_the_wing(side):
+    cfg = jc.read(TRANSPORT)
+    wing, body = cfg["wing"], cfg["body"]
+    inter = intersect_body(wing, body, side)
+    xs = body.x_global
+    got = plane_points(wing, body, side, inter.points, xs)
+    ok = np.all(np.isfinite(got), axis=1)
+    x_in = inter.points[inter.found, 0]
+    # every station strictly inside the root chord is solved, none outside
+    inside = (xs > x_in.min() + 1e-6) & (xs < x_in.max() - 1e-6)
+    assert ok.sum() >= 5 and np.array_equal(ok, inside)
+    L = body.length
+    p = got[ok]
+    assert np.abs(p[:, 0] - xs[ok]).max() <= 1e-12 * L
+    # on the circle the deck gives at that very station (radius and centre as written)
+    i = np.flatnonzero(ok)
+    centre_z = body.origin[2] + (body.camber[i] if body.camber is not None else 0.0)
+    r = np.hypot(p[:, 1] - body.origin[1], p[:, 2] - centre_z)
+    assert np.abs(r - body.radius[i]).max() <= 1e-9 * L
+    assert np.abs(wing_height(wing, side, p) - p[:, 2]).max() <= 1e-9 * L
+
+
+def test_a_station_outside_the_points_or_beside_a_missed_line_is_nan():
+    cfg = jc.read(TRANSPORT)
+    wing, body = cfg["wing"], cfg["body"]
+    inter = intersect_body(wing, body, "upper")
+    pts = inter.points.copy()
+    pts[3] = np.nan                                   # a line that misses
+    x = np.array([pts[0, 0] - 1.0, 0.5 * (pts[2, 0] + pts[4, 0]), pts[-1, 0] + 1.0,
+                  0.5 * (pts[5, 0] + pts[6, 0])])
+    got = plane_points(wing, body, "upper", pts, x)
+    assert np.isnan(got[:3]).all()
+    assert np.all(np.isfinite(got[3]))
+
+
+def test_fuselage_rows_inside_a_high_wing_root_end_on_the_wing():
+    """A generated high wing sitting on an arbitrary fuselage's shoulder, with a tail (the
+    TM-4607 split layout): the fuselage's rows at its own stations between the wing's chord
+    stations ended at the angle interpolated between the intersection points, up to 0.4 ft
+    inside the wing (0.02 of the fuselage's height), and the wing's lower surface crossed the
+    fuselage block. Now every row inside the root chord ends on the wing's surface."""
+    cfg = jc.read(SHOULDER)
+    geo = jc.complete(cfg)
+    wing = geo.configuration["wing"]
+    L = float(np.ptp(geo.extents()[:, 0]))
+    for side in ("upper", "lower"):
+        inter = np.asarray(geo.intersections[f"wing/body {side}"])
+        net = np.asarray(geo.networks[f"body {side}"])
+        ends = net[:, -1]                       # rows run from the plane of symmetry
+        x_in = inter[np.all(np.isfinite(inter), axis=1), 0]
+        rows = (ends[:, 0] > x_in.min()) & (ends[:, 0] < x_in.max())
+        assert rows.sum() >= 3
+        ends = ends[rows]
+        assert np.abs(wing_height(wing, side, ends) - ends[:, 2]).max() <= 1e-9 * L
