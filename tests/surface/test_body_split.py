@@ -27,3 +27,72 @@ def test_upper_and_lower_blocks_carry_the_same_points_where_they_meet():
     outside = lambda p: p[(p[:, 0] < 30.0) | (p[:, 0] > 55.0)]  # noqa: E731
     assert _keys(outside(up)) == _keys(outside(lo))
     assert {71.3, 76.9, 83.3, 88.7} <= {p[0] for p in _keys(outside(lo))}
+
+
+def _region(body, x, theta):
+    x, theta = np.asarray(x, float), np.asarray(theta, float)
+    return Boundary(x, theta, "", body.point(x, theta))
+
+
+def test_a_staggered_overlap_is_found_with_the_higher_region_and_its_stations():
+    from juncture.surface.overlap_blocks import find_overlap
+
+    body = CircularBody("body", np.linspace(0.0, 100.0, 11), np.full(11, 4.0))
+    canard = (_region(body, [20, 30, 45], [0.6, 0.7, 0.6]),
+              _region(body, [20, 30, 45], [0.6, 0.4, 0.6]))
+    wing = (_region(body, [40, 60, 80], [-0.2, -0.1, -0.2]),
+            _region(body, [40, 60, 80], [-0.2, -0.4, -0.2]))
+    ov = find_overlap([canard[0], wing[0]], [canard[1], wing[1]])
+    assert (ov.high, ov.low, ov.first, ov.m0, ov.m1) == (0, 1, 0, 40.0, 45.0)
+    ov = find_overlap([wing[0], canard[0]], [wing[1], canard[1]])
+    assert (ov.high, ov.low, ov.first) == (1, 0, 1)
+    # nested (one inside the other's range), or at one height: not handled
+    inner = (_region(body, [50, 60, 70], [0.6, 0.7, 0.6]),
+             _region(body, [50, 60, 70], [0.6, 0.4, 0.6]))
+    assert find_overlap([inner[0], wing[0]], [inner[1], wing[1]]) is None
+    level = (_region(body, [20, 30, 45], [-0.2, -0.1, -0.2]),
+             _region(body, [20, 30, 45], [-0.2, -0.3, -0.2]))
+    assert find_overlap([level[0], wing[0]], [level[1], wing[1]]) is None
+
+
+def test_three_blocks_tile_the_section_where_two_regions_overlap():
+    """A canard (high) whose trailing edge lies behind the wing's (low) leading edge: at
+    every station of the overlap the upper block runs from the top to the canard's upper
+    curve, the middle block from its lower curve to the wing's upper curve, the lower block
+    from the wing's lower curve to the bottom; the middle block's rows end on the regions'
+    own points where it has their stations, and its two degenerate rows are the points
+    where the upper (lower) block passes from one region to the other."""
+    body = CircularBody("body", np.linspace(0.0, 100.0, 21), np.full(21, 4.0))
+    canard = (_region(body, [20, 30, 45], [0.6, 0.7, 0.6]),
+              _region(body, [20, 30, 45], [0.6, 0.4, 0.6]))
+    wing = (_region(body, [40, 60, 80], [-0.2, -0.1, -0.2]),
+            _region(body, [40, 60, 80], [-0.2, -0.4, -0.2]))
+    nets = split_body(body, [canard[0], wing[0]], [canard[1], wing[1]])
+    mid = nets["body middle"]
+
+    def angle(p):
+        return np.arctan2(p[..., 2], p[..., 1])
+    real = mid[1:-1]                                   # without the degenerate rows
+    assert np.all(np.ptp(mid[0], axis=0) == 0) and np.all(np.ptp(mid[-1], axis=0) == 0)
+    xs = real[:, 0, 0]
+    assert xs.min() == 40.0 and xs.max() == 45.0 and 45.0 in xs and 40.0 in xs
+    ends = _keys(np.concatenate([real[:, 0], real[:, -1]]))
+    assert _keys([canard[1].points[-1], wing[0].points[0]]) <= ends   # their own points
+    hi = np.maximum(angle(real[:, 0]), angle(real[:, -1]))
+    lo = np.minimum(angle(real[:, 0]), angle(real[:, -1]))
+    assert np.allclose(hi, np.interp(xs, canard[1].x, canard[1].theta), atol=1e-12)
+    assert np.allclose(lo, np.interp(xs, wing[0].x, wing[0].theta), atol=1e-12)
+    # the upper and lower blocks at the overlap's stations stop at the outer curves
+    for name, curve in (("body upper", canard[0]), ("body lower", wing[1])):
+        net = nets[name]
+        rows = net[(net[:, 0, 0] >= 40.0) & (net[:, 0, 0] <= 45.0)]
+        inner = np.where(np.abs(angle(rows[:, 0])) < np.abs(angle(rows[:, -1])),
+                         angle(rows[:, 0]), angle(rows[:, -1]))
+        assert np.allclose(inner, np.interp(rows[:, 0, 0], curve.x, curve.theta), atol=1e-12)
+    # the degenerate rows are the blocks' row ends at their switching stations
+    up_ends = {tuple(p) for p in (nets["body upper"].reshape(-1, 3) + 0.0).tolist()}
+    lo_ends = {tuple(p) for p in (nets["body lower"].reshape(-1, 3) + 0.0).tolist()}
+    before, after = sorted((mid[0, 0], mid[-1, 0]), key=lambda p: p[0])
+    assert before[0] < 40.0 < 45.0 < after[0]
+    assert tuple((before + 0.0).tolist()) in lo_ends      # before m0: the lower block's
+    assert tuple((after + 0.0).tolist()) in up_ends       # after m1: the upper block's

@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from .networks import body_range, orient, radial_outward
+from .overlap_blocks import curve_at, find_overlap, middle_block, restricted
 
 __all__ = ["Boundary", "bounding_curve", "boundary_from_points", "forward", "split_body",
            "seam_gap", "polyline_gap"]
@@ -133,15 +134,22 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     bottom, top_value, side = body_range(body)
     upper_regions, lower_regions = _shared_ends(upper_regions, lower_regions,
                                                 (bottom, top_value))
-    xu = np.unique(np.concatenate([_kept(xg, upper_regions, top_value)]
-                                  + [r.x for r in upper_regions] + [f.x for f in fins]))
-    xl = np.unique(np.concatenate([_kept(xg, lower_regions, bottom)]
-                                  + [r.x for r in lower_regions]))
     # Outside every region the two blocks end on one line (theta_b from the same ends), so
     # each takes the other's stations there: else a fin's stations on the upper block put
     # points on that line the lower block does not have (an open seam between them).
     spans = [(r.x[0], r.x[-1]) for r in (*upper_regions, *lower_regions) if r.x.size]
+    regions = (upper_regions, lower_regions)
+    overlap = find_overlap(*regions)
+    if overlap is not None:  # two regions over the same stations: a middle block
+        upper_regions, lower_regions = _outside(overlap, *regions)
+    xu = np.unique(np.concatenate([_kept(xg, upper_regions, top_value)]
+                                  + [r.x for r in upper_regions] + [f.x for f in fins]))
+    xl = np.unique(np.concatenate([_kept(xg, lower_regions, bottom)]
+                                  + [r.x for r in lower_regions]))
     xu, xl = _shared_stations(xu, xl, spans)
+    if overlap is not None:
+        upper_regions, lower_regions, ends = _switches(body, overlap, regions, upper_regions,
+                                                       lower_regions, xu, xl)
     upper_regions = [_at_stations(body, r, xu) for r in upper_regions]
     lower_regions = [_at_stations(body, r, xl) for r in lower_regions]
     fins = [_at_stations(body, f, xu) for f in fins]
@@ -165,7 +173,48 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     for fin in fins:  # rows at a fin's stations start exactly at its points
         _end_at_points(up[:, ::-1], xu, [fin], None)
     radial = radial_outward(body)
-    return {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
+    nets = {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
+    if overlap is not None:
+        m0, m1 = overlap.m0, overlap.m1
+        inner = np.unique(np.concatenate(
+            [xg[(xg >= m0) & (xg <= m1)], [m0, m1]]
+            + [r.x[(r.x >= m0) & (r.x <= m1)] for r in (regions[1][overlap.high],
+                                                        regions[0][overlap.low])]))
+        n_middle = max(3, int(n_upper + n_lower) // 3)
+        nets["body middle"] = orient(middle_block(body, overlap, *regions, inner, n_middle,
+                                                  ends), radial)
+    return nets
+
+
+def _outside(ov, uppers, lowers):
+    """The upper and lower blocks' regions over two regions that overlap (``ov``): the
+    lower region's upper curve and the higher region's lower curve only outside [m0, m1]
+    (the middle block has them inside)."""
+    def cut(region, first):
+        if first:    # the region that starts first: its points ahead of m0
+            return restricted(None, region, lambda x: x < ov.m0, None)
+        return restricted(None, region, lambda x: x > ov.m1, None)
+    ups, los = list(uppers), list(lowers)
+    ups[ov.low] = cut(uppers[ov.low], ov.low == ov.first)
+    los[ov.high] = cut(lowers[ov.high], ov.high == ov.first)
+    return ups, los
+
+
+def _switches(body, ov, regions, ups, los, xu, xl):
+    """(upper regions, lower regions, middle block's degenerate rows): where each block
+    passes from one region to the other (at m0 for the region that starts later, at m1
+    for the one that ends first), the block's neighbouring station gets the first
+    region's curve point there (:mod:`juncture.surface.overlap_blocks`)."""
+    ends = []
+    ups, los = list(ups), list(los)
+    for block, xs, full, k in ((ups, xu, regions[0], ov.low), (los, xl, regions[1], ov.high)):
+        if k == ov.first:          # clipped ahead of m0: its last station before m0
+            x = float(xs[xs < ov.m0].max())
+        else:                      # clipped after m1: its first station after m1
+            x = float(xs[xs > ov.m1].min())
+        block[k] = restricted(body, full[k], (lambda v, r=block[k]: np.isin(v, r.x)), x)
+        ends.append((x, curve_at(body, full[k], [x])[0][0]))
+    return ups, los, ends
 
 
 def _shared_ends(uppers, lowers, fars):

@@ -17,7 +17,8 @@ __all__ = ["mesh", "finish", "quality", "overlapping_regions"]
 
 def overlapping_regions(geometry):
     """One line per pair of horizontal surfaces (wing, canards, tails) whose intersections
-    with the same body overlap in x, or [].
+    with the same body overlap in x (one inside the other's range, or at one height over the
+    overlap: a staggered pair one above the other has a middle block), or [].
 
     The fuselage's upper and lower blocks (TM-4607) are bounded by one region after another
     along the body: two regions side by side over the same stations (a canard whose root
@@ -25,29 +26,47 @@ def overlapping_regions(geometry):
     usually cross each other there too.
     """
     comps = {c.name: c for c in getattr(geometry, "configuration", None) or ()}
-    spans = {}
+    spans, lines = {}, {}
     for name, pts in geometry.intersections.items():
         a, rest = name.split("/", 1)
-        host = rest.rsplit(" ", 1)[0]
+        host, side = rest.rsplit(" ", 1)
         if getattr(comps.get(a), "span_axis", None) != 1:
             continue
         p = np.asarray(pts, float)
-        x = p[np.all(np.isfinite(p), axis=1), 0]
-        if x.size:
+        p = p[np.all(np.isfinite(p), axis=1)]
+        if len(p):
             lo, hi = spans.setdefault(host, {}).get(a, (np.inf, -np.inf))
-            spans[host][a] = (min(lo, float(x.min())), max(hi, float(x.max())))
+            spans[host][a] = (min(lo, float(p[:, 0].min())), max(hi, float(p[:, 0].max())))
+            lines[(a, host, side)] = p[np.argsort(p[:, 0], kind="stable")]
     out = []
     for host, by in spans.items():
         names = sorted(by, key=lambda n: by[n][0])
         for i, a in enumerate(names):
             for b in names[i + 1:]:
                 (la, ha), (lb, hb) = by[a], by[b]
-                if lb < ha and la < hb:
+                if lb < ha and la < hb and not _stacked(lines, host, a, b, lb, ha, hb):
                     out.append(f"{a} and {b} meet {host} over the same stations (x {la:.6g} to "
                                f"{ha:.6g} and {lb:.6g} to {hb:.6g}): the fuselage layout needs "
                                f"one after the other; move {_smaller(a, b, by)} clear of the "
                                f"other in x")
     return out
+
+
+def _stacked(lines, host, a, b, lb, ha, hb):
+    """Whether regions ``a`` (starting first) and ``b`` overlap staggered (b from lb to hb
+    beyond a's end ha) with one's lower line above the other's upper line over the overlap:
+    the middle block takes the fuselage between them
+    (:mod:`juncture.surface.overlap_blocks`)."""
+    if not (hb > ha and (a, host, "upper") in lines and (b, host, "upper") in lines):
+        return False
+    if (a, host, "lower") not in lines or (b, host, "lower") not in lines:
+        return False
+    mid = np.linspace(lb, ha, 5)[1:-1]
+
+    def z(name, side):
+        p = lines[(name, host, side)]
+        return np.interp(mid, p[:, 0], p[:, 2])
+    return bool(np.all(z(a, "lower") > z(b, "upper")) or np.all(z(b, "lower") > z(a, "upper")))
 
 
 def _smaller(a, b, spans):
