@@ -185,3 +185,21 @@ def _area(ring):
     """Shoelace area of a polygon's x, y."""
     x, y = ring[:, 0], ring[:, 1]
     return 0.5 * abs(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def test_a_body_chart_unrolls_the_section_with_its_cut_opposite_the_loops():
+    """juncture.surface.imprint.body_chart: x, and the arc round the section centre at the
+    body's largest radius, measured from the loops' mean direction (here the top), so a
+    region straddling the top (twin fins) unrolls without a cut or a fold."""
+    from juncture.model import CircularBody
+    from juncture.surface.imprint import body_chart
+
+    body = CircularBody("body", np.linspace(0.0, 50.0, 6), np.r_[0.5, 2.0, 3.0, 3.0, 2.0, 1.0],
+                        camber=np.full(6, 0.4))
+    theta = np.linspace(-3.0, 3.0, 61) + 0.5 * np.pi          # round from below the left
+    x = np.full(theta.size, 25.0)
+    pts = body.point(x, theta)
+    loops = body.point(np.array([24.0, 26.0]), np.array([0.5 * np.pi - 0.4, 0.5 * np.pi + 0.4]))
+    uv = body_chart(body, loops)(pts)
+    assert np.array_equal(uv[:, 0], x)
+    assert np.allclose(uv[:, 1], 3.0 * (theta - 0.5 * np.pi), atol=1e-12)   # r_max = 3

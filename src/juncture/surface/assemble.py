@@ -422,7 +422,9 @@ def _imprint_all(geometry, vertices, triangles, component, surface, components):
     for host, loop in footprints(geometry, vertices, triangles, component, components):
         by_host.setdefault(host, []).append(loop)
     cuts = [cut for host, loops in by_host.items()
-            for cut in imprint_many(vertices, triangles, np.isin(component, host), loops)]
+            for cut in imprint_many(vertices, triangles, np.isin(component, host), loops,
+                                    _chart(geometry, [components[h] for h in host],
+                                           vertices[np.concatenate(loops)]))]
     # Every cut is planned on the triangles as assembled; hosts differ or regions are
     # disjoint, so removing them all at once is safe.
     keep = np.ones(len(triangles), bool)
@@ -434,6 +436,19 @@ def _imprint_all(geometry, vertices, triangles, component, surface, components):
         new_comp.append(np.full(len(new), np.bincount(component[removed]).argmax()))
         new_surf.append(np.full(len(new), np.bincount(surface[removed]).argmax()))
     return np.concatenate(new_tri), np.concatenate(new_comp), np.concatenate(new_surf)
+
+
+def _chart(geometry, names, points):
+    """:func:`juncture.surface.imprint.body_chart` of the one fuselage among the host
+    components ``names``, or None (a wing, or a block two components share)."""
+    from ..model import ArbitraryBody, CircularBody
+    from .imprint import body_chart
+
+    models = {c.name: c for c in getattr(geometry, "configuration", None) or ()}
+    found = [models.get(n) for n in names]
+    if len(found) == 1 and isinstance(found[0], (CircularBody, ArbitraryBody)):
+        return body_chart(found[0], points)
+    return None
 
 
 #: A point of a mirrored network this close to its mirror plane (a share of the size) lies on

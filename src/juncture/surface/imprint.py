@@ -18,7 +18,7 @@ import numpy as np
 
 from .plane import constrained_triangles, distance, frame, inside, is_simple, unit
 
-__all__ = ["imprint", "imprint_many", "footprints", "hosts_of"]
+__all__ = ["imprint", "imprint_many", "footprints", "hosts_of", "body_chart"]
 
 #: Host vertices nearer the loop than this share of the local edge length are left out.
 CROWD = 0.1
@@ -176,11 +176,16 @@ def _plan(h_, loop):
     return n, h, cand[_region(h_.vertices, h_.triangles, cand, uv, uv[loop], h)]
 
 
-def imprint_many(vertices, triangles, host, loops):
+def imprint_many(vertices, triangles, host, loops, chart=None):
     """:func:`imprint` for several loops on one host: loops whose regions share a triangle
     (twin fins either side of the plane of symmetry) are cut together, in one plane, each
     a hole of one triangulation. Returns a list of (removed, new), one per group that could
-    be cut (groups never share a triangle)."""
+    be cut (groups never share a triangle).
+
+    ``chart(points)`` (k, 2), optional: the host's own surface parameters (a fuselage's x
+    and arc round its axis, :func:`body_chart`), used where the region does not project
+    onto one plane without folding (twin fins canted on a tail cone: their common region
+    spans the top of a section that turns aft)."""
     h_ = _Host(vertices, triangles, host)
     loops = [np.asarray(lp) for lp in loops if len(lp) >= 3]
     if not len(h_.hid) or not loops:
@@ -198,26 +203,32 @@ def imprint_many(vertices, triangles, host, loops):
                                   ).astype(np.int64)))
     out = []
     for group_loops, normals, hs, region in groups:
-        cut = _cut(h_, group_loops, unit(np.sum(normals, axis=0)), max(hs), region)
+        n = unit(np.sum(normals, axis=0))
+        axes, origin = frame(n), vertices[np.concatenate(group_loops)].mean(axis=0)
+        cut = _cut(h_, group_loops, n, max(hs), region,
+                   lambda p, o=origin, a=axes: (p - o) @ a.T)
+        if cut is None and chart is not None:
+            cut = _cut(h_, group_loops, None, max(hs), region, chart)
         if cut is not None:
             out.append(cut)
     return out
 
 
-def _cut(h_, loops, n, h, region):
-    """Re-triangulate ``region`` with the loops as holes (see :func:`imprint`)."""
+def _cut(h_, loops, n, h, region, flat):
+    """Re-triangulate ``region`` with the loops as holes (see :func:`imprint`), in the
+    plane ``flat(points)`` (k, 2) maps onto: the plane normal to ``n``, or with ``n`` None
+    the host's own parameters (the new triangles then take the host's orientation there)."""
     vertices, triangles = h_.vertices, h_.triangles
     all_loop = np.concatenate(loops)
-    axes, origin = frame(n), vertices[all_loop].mean(axis=0)
-    uv = (vertices - origin) @ axes.T
+    uv = flat(vertices)
     border = _outer(triangles[region], uv)
     if border is None:
         return None
     # Fill what the border encloses (host triangles the margin test left out), once.
     # Only triangles reached from the region through shared corners: the far side of a
     # body can face the same way and project inside too.
-    fill = h_.hid[(unit(h_.normal) @ n > 0.25)
-                  & inside((h_.cent - origin) @ axes.T, uv[border])]
+    facing = np.ones(len(h_.hid), bool) if n is None else unit(h_.normal) @ n > 0.25
+    fill = h_.hid[facing & inside(flat(h_.cent), uv[border])]
     fill = np.setdiff1d(fill, region)
     for _ in range(50):
         reached = fill[np.isin(triangles[fill], triangles[region]).any(axis=1)]
@@ -244,10 +255,43 @@ def _cut(h_, loops, n, h, region):
     if local_tri is None:
         return None
     new = ids[local_tri]
+    if n is None:
+        return _oriented(uv, triangles[region], new, region)
     q = vertices[new]
     if np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
         return None
     return region, new
+
+
+def _signed(uv, tri):
+    a, b, c = uv[tri[:, 0]], uv[tri[:, 1]], uv[tri[:, 2]]
+    return (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+
+
+def _oriented(uv, old, new, region):
+    """(region, new) with ``new`` turned as the host's triangles ``old`` turn in the chart
+    ``uv``; None where the chart folds them (both turns) or a new triangle is flat."""
+    before, after = np.sign(_signed(uv, old)), np.sign(_signed(uv, new))
+    if np.any(before == 0) or np.any(after == 0) or len(np.unique(before)) != 1 \
+            or len(np.unique(after)) != 1:
+        return None
+    return region, (new if before[0] == after[0] else new[:, ::-1])
+
+
+def body_chart(body, points):
+    """``chart(p)`` (k, 2) of a fuselage for :func:`imprint_many`: x, and the arc round
+    the section centre from the mean direction of ``points`` (the loops), at the body's
+    largest radius (the branch cut is opposite the loops)."""
+    def angle(p):
+        c = body.center_at(p[:, 0])
+        return np.arctan2(p[:, 2] - c[:, 1], p[:, 1] - c[:, 0])
+    ref = np.angle(np.exp(1j * angle(np.asarray(points, float))).mean())
+    scale = float(np.sqrt(np.max(body.area_at(body.x_global)) / np.pi)) or 1.0
+
+    def chart(p):
+        p = np.asarray(p, float)
+        return np.stack([p[:, 0], scale * np.angle(np.exp(1j * (angle(p) - ref)))], axis=1)
+    return chart
 
 
 def hosts_of(name, components):
