@@ -85,3 +85,20 @@ def test_a_pylons_two_lines_a_hair_apart_in_x_make_one_station_of_the_pod():
     assert np.diff(np.unique(rows)).min() > 1e-3 * 20.0      # no two rows a hair apart
     for pts, col in ((out_pts, -1), (in_pts, 0)):
         assert all(any(np.array_equal(p, q) for q in net[:, col]) for p in pts)
+
+
+def test_a_curve_a_hair_beside_a_section_is_not_inserted():
+    """A fin standing 0.024 ft inboard of a wing section 13.5 ft from the next (a generated
+    airplane): its traced curve beside the section made a row of slivers and edges in more
+    than two triangles. Within BESIDE of the spacing the curve is left out (the fin's
+    footprint is still cut into the wing at assembly); a curve between sections goes in."""
+    from juncture.surface.component_networks import BESIDE
+
+    wing = SimpleNamespace(name="w")
+    net = _wing_lower(False)
+    near = _curve(6.0 - 0.5 * BESIDE * 4.0)         # half the threshold off span 6
+    out = add_trace_curves(wing, {"w lower": net}, [("lower", near)])["w lower"]
+    np.testing.assert_array_equal(out, net)
+    far = _curve(6.0 - 2.0 * BESIDE * 4.0)
+    out = add_trace_curves(wing, {"w lower": net}, [("lower", far)])["w lower"]
+    assert len(out) == len(net) + 1
