@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from .networks import body_range, orient, radial_outward
-from .overlap_blocks import curve_at, find_overlap, middle_block, restricted
+from .overlap_blocks import find_overlap, middle_block, outside_regions, switch_points
 
 __all__ = ["Boundary", "bounding_curve", "boundary_from_points", "forward", "split_body",
            "seam_gap", "polyline_gap"]
@@ -127,7 +127,9 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
 
     Returns
     -------
-    dict with "body upper" and "body lower" networks (n_stations, n_points, 3)
+    dict with "body upper" and "body lower" networks (n_stations, n_points, 3), and
+    "body middle" where two regions overlap in x one above the other
+    (:mod:`juncture.surface.overlap_blocks`)
     """
     xg = body.x_global if stations is None else np.asarray(stations, float)
     x_nose, x_end = float(body.x_global[0]), float(body.x_global[-1])
@@ -141,15 +143,15 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     regions = (upper_regions, lower_regions)
     overlap = find_overlap(*regions)
     if overlap is not None:  # two regions over the same stations: a middle block
-        upper_regions, lower_regions = _outside(overlap, *regions)
+        upper_regions, lower_regions = outside_regions(overlap, *regions)
     xu = np.unique(np.concatenate([_kept(xg, upper_regions, top_value)]
                                   + [r.x for r in upper_regions] + [f.x for f in fins]))
     xl = np.unique(np.concatenate([_kept(xg, lower_regions, bottom)]
                                   + [r.x for r in lower_regions]))
     xu, xl = _shared_stations(xu, xl, spans)
     if overlap is not None:
-        upper_regions, lower_regions, ends = _switches(body, overlap, regions, upper_regions,
-                                                       lower_regions, xu, xl)
+        upper_regions, lower_regions, ends = switch_points(body, overlap, regions,
+                                                           upper_regions, lower_regions, xu, xl)
     upper_regions = [_at_stations(body, r, xu) for r in upper_regions]
     lower_regions = [_at_stations(body, r, xl) for r in lower_regions]
     fins = [_at_stations(body, f, xu) for f in fins]
@@ -184,37 +186,6 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         nets["body middle"] = orient(middle_block(body, overlap, *regions, inner, n_middle,
                                                   ends), radial)
     return nets
-
-
-def _outside(ov, uppers, lowers):
-    """The upper and lower blocks' regions over two regions that overlap (``ov``): the
-    lower region's upper curve and the higher region's lower curve only outside [m0, m1]
-    (the middle block has them inside)."""
-    def cut(region, first):
-        if first:    # the region that starts first: its points ahead of m0
-            return restricted(None, region, lambda x: x < ov.m0, None)
-        return restricted(None, region, lambda x: x > ov.m1, None)
-    ups, los = list(uppers), list(lowers)
-    ups[ov.low] = cut(uppers[ov.low], ov.low == ov.first)
-    los[ov.high] = cut(lowers[ov.high], ov.high == ov.first)
-    return ups, los
-
-
-def _switches(body, ov, regions, ups, los, xu, xl):
-    """(upper regions, lower regions, middle block's degenerate rows): where each block
-    passes from one region to the other (at m0 for the region that starts later, at m1
-    for the one that ends first), the block's neighbouring station gets the first
-    region's curve point there (:mod:`juncture.surface.overlap_blocks`)."""
-    ends = []
-    ups, los = list(ups), list(los)
-    for block, xs, full, k in ((ups, xu, regions[0], ov.low), (los, xl, regions[1], ov.high)):
-        if k == ov.first:          # clipped ahead of m0: its last station before m0
-            x = float(xs[xs < ov.m0].max())
-        else:                      # clipped after m1: its first station after m1
-            x = float(xs[xs > ov.m1].min())
-        block[k] = restricted(body, full[k], (lambda v, r=block[k]: np.isin(v, r.x)), x)
-        ends.append((x, curve_at(body, full[k], [x])[0][0]))
-    return ups, los, ends
 
 
 def _shared_ends(uppers, lowers, fars):

@@ -35,7 +35,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["Overlap", "find_overlap", "restricted", "curve_at", "middle_block"]
+__all__ = ["Overlap", "find_overlap", "restricted", "curve_at", "middle_block",
+           "outside_regions", "switch_points"]
 
 
 class Overlap(NamedTuple):
@@ -137,3 +138,34 @@ def middle_block(body, ov, uppers, lowers, stations, n_points, ends):
     for x, p in sorted(ends, key=lambda e: e[0]):
         rows.insert(0 if x < xs[0] else len(rows), np.broadcast_to(p, (1, len(frac), 3)))
     return np.concatenate(rows)
+
+
+def outside_regions(ov, uppers, lowers):
+    """The upper and lower blocks' regions over two regions that overlap (``ov``): the
+    lower region's upper curve and the higher region's lower curve only outside [m0, m1]
+    (the middle block has them inside)."""
+    def cut(region, first):
+        if first:    # the region that starts first: its points ahead of m0
+            return restricted(None, region, lambda x: x < ov.m0, None)
+        return restricted(None, region, lambda x: x > ov.m1, None)
+    ups, los = list(uppers), list(lowers)
+    ups[ov.low] = cut(uppers[ov.low], ov.low == ov.first)
+    los[ov.high] = cut(lowers[ov.high], ov.high == ov.first)
+    return ups, los
+
+
+def switch_points(body, ov, regions, ups, los, xu, xl):
+    """(upper regions, lower regions, middle block's degenerate rows): where each block
+    passes from one region to the other (at m0 for the region that starts later, at m1
+    for the one that ends first), the block's neighbouring station gets the first
+    region's curve point there (the module docstring)."""
+    ends = []
+    ups, los = list(ups), list(los)
+    for block, xs, full, k in ((ups, xu, regions[0], ov.low), (los, xl, regions[1], ov.high)):
+        if k == ov.first:          # clipped ahead of m0: its last station before m0
+            x = float(xs[xs < ov.m0].max())
+        else:                      # clipped after m1: its first station after m1
+            x = float(xs[xs > ov.m1].min())
+        block[k] = restricted(body, full[k], (lambda v, r=block[k]: np.isin(v, r.x)), x)
+        ends.append((x, curve_at(body, full[k], [x])[0][0]))
+    return ups, los, ends
