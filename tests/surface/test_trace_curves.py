@@ -102,3 +102,16 @@ def test_a_curve_a_hair_beside_a_section_is_not_inserted():
     far = _curve(6.0 - 2.0 * BESIDE * 4.0)
     out = add_trace_curves(wing, {"w lower": net}, [("lower", far)])["w lower"]
     assert len(out) == len(net) + 1
+
+
+def test_a_curve_crossing_a_section_is_not_inserted():
+    """A fin's traced curve whose span runs from one side of a wing section to the other
+    (a generated airplane: 30.478 at the ends, past 30.575 between) went in on both sides
+    of the section by its mean span and folded the network: left out (the footprint is cut
+    all the same)."""
+    wing = SimpleNamespace(name="w")
+    net = _wing_lower(False)
+    crossing = _curve(5.8)
+    crossing[2:4, 1] = 6.2                          # past the section at span 6
+    out = add_trace_curves(wing, {"w lower": net}, [("lower", crossing)])["w lower"]
+    np.testing.assert_array_equal(out, net)

@@ -317,18 +317,23 @@ def trace_curve(wing, side, line):
 
 
 #: A traced curve within this share of the spacing between its nearest line and that
-#: line's neighbour is not inserted (the footprint is cut into the surface all the same,
-#: :mod:`juncture.surface.imprint`): beside a section 0.2 % of that spacing away it left a
-#: row of slivers and edges in more than two triangles.
+#: line's neighbour, or crossing a line, is not inserted (the footprint is cut into the
+#: surface all the same, :mod:`juncture.surface.imprint`): beside a section 0.2 % of that
+#: spacing away it left a row of slivers and edges in more than two triangles; crossing a
+#: section, it folded the network.
 BESIDE = 0.02
 
 
-def _beside(curve, lines):
-    """Whether ``curve`` (n, 3) lies within :data:`BESIDE` of the spacing from one of
-    ``lines`` (n-lines of a network, each (n, 3), in span order)."""
+def _beside(curve, lines, axis=1):
+    """Whether ``curve`` (n, 3) crosses one of ``lines`` (n-lines of a network, each (n,
+    3), in span order; its span coordinate ``axis`` on both sides of the line's) or lies
+    within :data:`BESIDE` of the spacing from one: inserted, it would fold the network."""
     if len(lines) < 2:
         return False
     stack = np.stack(lines)
+    d = curve[None, :, axis] - stack[:, :, axis]
+    if np.any((d.min(axis=1) < 0.0) & (d.max(axis=1) > 0.0)):
+        return True
     gap = np.linalg.norm(stack - curve[None], axis=2).max(axis=1)
     k = int(np.argmin(gap))
     other = stack[k + 1] if k + 1 < len(stack) else stack[k - 1]
@@ -361,7 +366,7 @@ def add_trace_curves(wing, nets, traces):
         base = net[::-1] if backward else net
         rest = list(base[1:])
         for c in sorted(add, key=lambda c: c[:, 1].mean()):
-            if _beside(c, rest):
+            if _beside(c, rest, getattr(wing, "span_axis", 1)):
                 continue
             # after the last line not outboard of it: the lines are kept in their order (a
             # fillet's lines down the fuselage side are not in span order)
