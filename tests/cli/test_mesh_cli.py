@@ -81,3 +81,19 @@ def test_the_triangles_are_re_triangulated_unless_min_angle_is_zero(tmp_path, ca
         smallest = triangle_angles(tm.vertices, tm.faces).min(axis=1)
         shares.append((smallest >= 20.0).mean())
     assert shares[0] >= 0.97 > shares[1]
+
+
+def test_an_open_surface_is_refused_with_its_cause_first(tmp_path, capsys):
+    """A tail whose root starts ahead of the wing's trailing edge at the wing's own height
+    (tests/data/generated/refused): the command line names the cause, as juncture.mesh
+    does, before the open edges it leads to; one line, exit status 2, nothing written."""
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "refused" / "tail_root_overlaps_wing_root.inp"
+    out = tmp_path / "out"
+    assert main(["mesh", str(deck), "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1
+    assert "wing and tail 1 meet body over the same stations" in err[0]
+    assert err[0].index("same stations") < err[0].index("edges in more than two")
+    assert not out.exists()

@@ -51,16 +51,23 @@ def _seam_open_edges(pts, tri):
     return sum(bool(on[a] and on[b]) for a, b in edges)
 
 
-def test_a_seam_with_different_points_on_each_side_closes_by_vertex_ids():
-    rng = np.random.default_rng(3)
-    coarse = np.linspace(0.0, 1.0, 6)
-    fine = np.sort(np.r_[0.0, 1.0, rng.uniform(0.02, 0.98, 13)])
-    pts, tri, comp = _two_sides(coarse, fine)
+def _closed_by_split(pts, tri, comp):
+    """split_seams' (triangles, parent) of a seam open before, checked closed and
+    consistently oriented along it."""
     assert _seam_open_edges(pts, tri) > 0
     out, parent = split_seams(pts, tri, comp)
     assert _seam_open_edges(pts, out) == 0
     report = check_mesh(pts, out)
     assert report.misoriented_edges == 0 and report.nonmanifold_edges == 0
+    return out, parent
+
+
+def test_a_seam_with_different_points_on_each_side_closes_by_vertex_ids():
+    rng = np.random.default_rng(3)
+    coarse = np.linspace(0.0, 1.0, 6)
+    fine = np.sort(np.r_[0.0, 1.0, rng.uniform(0.02, 0.98, 13)])
+    pts, tri, comp = _two_sides(coarse, fine)
+    out, parent = _closed_by_split(pts, tri, comp)
     # Nothing is moved or added: the same vertices; the coarse side now reaches the arc's
     # points, so it gives up at most the circular segments between its chords and the arc.
     def area(t):
@@ -89,14 +96,8 @@ def test_a_seam_curve_bending_past_the_lens_between_two_shared_points_closes():
     length off the arc's middle, past the lens), the other four points between: the other
     side's chain between the two shared points is taken into the chord's triangle (a
     fuselage row ending on a wing's exact intersection between two of its chord stations)."""
-    coarse = np.array([0.0, 1.0])
-    fine = np.linspace(0.0, 1.0, 6)
-    pts, tri, comp = _two_sides(coarse, fine)
-    assert _seam_open_edges(pts, tri) > 0
-    out, _ = split_seams(pts, tri, comp)
-    assert _seam_open_edges(pts, out) == 0
-    report = check_mesh(pts, out)
-    assert report.misoriented_edges == 0 and report.nonmanifold_edges == 0
+    pts, tri, comp = _two_sides(np.array([0.0, 1.0]), np.linspace(0.0, 1.0, 6))
+    _closed_by_split(pts, tri, comp)
 
 
 def test_a_chain_far_off_the_edge_between_two_shared_points_stays_open():

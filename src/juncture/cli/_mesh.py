@@ -50,7 +50,7 @@ def run(args, progress):
     from ..errors import GeometryError
     from ..surface.assemble import assemble
     from ..surface.lift import surface_lift
-    from ..surface.pipeline import finish
+    from ..surface.pipeline import finish, overlapping_regions
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration
@@ -70,8 +70,10 @@ def run(args, progress):
         mesh = assemble(geo)
         summary = summarize(mesh)
         if not summary.closed or summary.open_loops:
+            # the cause in the user's terms first, where it is known (as jc.mesh says it)
             fail("the completed surface is not closed, so no mesh was written: "
-                 + "; ".join(line[6:] for line in summary.lines() if line.startswith("FAIL")))
+                 + "; ".join(overlapping_regions(geo) + [line[6:] for line in summary.lines()
+                                                         if line.startswith("FAIL")]))
         lift = None
         if args.min_angle:
             bar.step(f"re-triangulate (smallest angle {args.min_angle:g} deg) and check")

@@ -26,47 +26,32 @@ def overlapping_regions(geometry):
     usually cross each other there too.
     """
     comps = {c.name: c for c in getattr(geometry, "configuration", None) or ()}
-    spans, lines = {}, {}
+    # The layout makes a middle block only for one staggered pair, one above the other,
+    # and only when no other pair overlaps (juncture.surface.overlap_blocks.find_overlap).
+    stacked = "body middle" in geometry.networks
+    spans = {}
     for name, pts in geometry.intersections.items():
         a, rest = name.split("/", 1)
-        host, side = rest.rsplit(" ", 1)
+        host = rest.rsplit(" ", 1)[0]
         if getattr(comps.get(a), "span_axis", None) != 1:
             continue
         p = np.asarray(pts, float)
-        p = p[np.all(np.isfinite(p), axis=1)]
-        if len(p):
+        x = p[np.all(np.isfinite(p), axis=1), 0]
+        if x.size:
             lo, hi = spans.setdefault(host, {}).get(a, (np.inf, -np.inf))
-            spans[host][a] = (min(lo, float(p[:, 0].min())), max(hi, float(p[:, 0].max())))
-            lines[(a, host, side)] = p[np.argsort(p[:, 0], kind="stable")]
+            spans[host][a] = (min(lo, float(x.min())), max(hi, float(x.max())))
     out = []
     for host, by in spans.items():
         names = sorted(by, key=lambda n: by[n][0])
         for i, a in enumerate(names):
             for b in names[i + 1:]:
                 (la, ha), (lb, hb) = by[a], by[b]
-                if lb < ha and la < hb and not _stacked(lines, host, a, b, lb, ha, hb):
+                if lb < ha and la < hb and not stacked:
                     out.append(f"{a} and {b} meet {host} over the same stations (x {la:.6g} to "
                                f"{ha:.6g} and {lb:.6g} to {hb:.6g}): the fuselage layout needs "
                                f"one after the other; move {_smaller(a, b, by)} clear of the "
                                f"other in x")
     return out
-
-
-def _stacked(lines, host, a, b, lb, ha, hb):
-    """Whether regions ``a`` (starting first) and ``b`` overlap staggered (b from lb to hb
-    beyond a's end ha) with one's lower line above the other's upper line over the overlap:
-    the middle block takes the fuselage between them
-    (:mod:`juncture.surface.overlap_blocks`)."""
-    if not (hb > ha and (a, host, "upper") in lines and (b, host, "upper") in lines):
-        return False
-    if (a, host, "lower") not in lines or (b, host, "lower") not in lines:
-        return False
-    mid = np.linspace(lb, ha, 5)[1:-1]
-
-    def z(name, side):
-        p = lines[(name, host, side)]
-        return np.interp(mid, p[:, 0], p[:, 2])
-    return bool(np.all(z(a, "lower") > z(b, "upper")) or np.all(z(b, "lower") > z(a, "upper")))
 
 
 def _smaller(a, b, spans):
