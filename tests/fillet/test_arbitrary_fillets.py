@@ -264,6 +264,10 @@ def check_arbitrary_keep_area(text, desc, fillet="cubic"):
             geo = jc.complete(cfg, fillet, keep_area=True)
         except jc.GeometryError as exc:  # refused in one line naming body and station
             msg = str(exc)
+            if "enters body only through the face of the step" in msg:
+                # a line entering only through a joint step's face (test_complete_misses)
+                assert desc["joints"] == "repeated" and desc["segments"] > 1, msg
+                return
             assert "\n" not in msg and msg.startswith("body") and "x = " in msg, msg
             if not isinstance(exc, jc.ConvergenceError):  # (a GeometryError subclass)
                 assert "can give up" in msg and "use a smaller fillet" in msg, msg

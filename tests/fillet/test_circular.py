@@ -156,6 +156,10 @@ def _check_generated(text, desc, keep_area=False):
             # keep_area's known open class (issue 11), or a refusal the deck deserves: a
             # fillet larger than the body can give up, naming the station and what to change.
             msg = str(exc)
+            if "enters body only through the face of the step" in msg:
+                # a line entering only through a joint step's face (test_complete_misses)
+                assert desc["joints"] == "repeated" and desc["segments"] > 1, msg
+                return
             assert keep_area and "\n" not in msg and msg.startswith("body"), msg
             if not isinstance(exc, jc.ConvergenceError):  # (a GeometryError subclass)
                 assert "can give up" in msg and "use a smaller fillet" in msg, msg
