@@ -315,9 +315,16 @@ def _exact(comp, body, side, points, mirrored=False):
     them; mirrored in y with ``mirrored``)."""
     from .intersect.stations import plane_points
 
+    solved = {}  # the same stations are asked again (both halves beside an unsymmetric
+    #              fin, the middle block's ends): each set is solved once
+
     def exact(x):
-        pts = plane_points(comp, body, side, points, x)
-        return mirror_points(pts) if mirrored else pts
+        x = np.asarray(x, float)
+        key = x.tobytes()
+        if key not in solved:
+            pts = plane_points(comp, body, side, points, x)
+            solved[key] = mirror_points(pts) if mirrored else pts
+        return solved[key].copy()
     return exact
 
 
