@@ -28,11 +28,12 @@ $(BROWSER):
 	else echo "note: no apt-get/root: the browser test will be skipped"; fi
 	@touch $@
 
+# The tests run on every core (pytest-xdist); the benchmarks alone, one at a time.
 test: $(STAMP) $(BROWSER)
-	$(BIN)/python -m pytest -q -m "not slow"
+	$(BIN)/python -m pytest -q -n auto -m "not slow"
 
 test-all: $(STAMP) $(BROWSER)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n auto
 
 bench: $(STAMP)
 	$(BIN)/python -m pytest -q benchmarks --benchmark-only

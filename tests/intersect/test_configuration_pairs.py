@@ -1,5 +1,6 @@
 """TM-4607: every touching pair of a whole configuration, found and intersected."""
 
+import re
 import warnings
 
 import numpy as np
@@ -73,8 +74,14 @@ def test_fin_standing_on_the_wing_upper_surface():
 
 def test_a_fin_line_that_misses_the_wing_is_a_warning_naming_it():
     cfg = fin_on_wing(overhang=10.0)  # trailing part of the fin hangs past the wing
-    with pytest.warns(jc.JunctureWarning, match=r"fin 1/wing outboard: lofting line \d+ never"):
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always", jc.JunctureWarning)
         geo = jc.complete(cfg)
+    said = [str(w.message) for w in got]
+    assert any(re.match(r"fin 1/wing outboard: lofting line \d+ never", m) for m in said)
+    # every line that misses is named, on the half of the wing it misses
+    assert all(re.match(r"fin 1/wing (in|out)board: lofting line \d+ never meets", m)
+               for m in said)
     assert any("never meets" in s for s in geo.log)
 
 
