@@ -49,6 +49,8 @@ class CheckReport:
     min_angle: float
     min_angle_limit: float = 0.0
     examples: dict = field(default_factory=dict)
+    #: (k, 2) the triangle pairs that intersect
+    pairs: np.ndarray | None = field(default=None, repr=False, compare=False)
 
     @property
     def ok(self):
@@ -141,39 +143,67 @@ def _volume(p):
 
 
 def _candidate_pairs(v, tri):
-    """Pairs (i < j) of triangles whose bounding boxes overlap (a uniform grid of cells)."""
+    """Pairs (i < j) of triangles whose bounding boxes overlap: a bounding-volume tree over
+    the triangles in Morton order of their box centres, walked pairwise level by level (a
+    node pair is opened only where the two boxes overlap), so the work follows the pairs
+    found, whatever the spread of triangle sizes (a uniform grid repeats a long triangle's
+    pairs in every cell it covers)."""
+    lo, hi, order = _leaf_boxes(v, tri)
+    i = j = np.zeros(1, np.int64)
+    for lo_k, hi_k in _tree_boxes(lo, hi)[1:]:
+        i, j = _children(i, j)
+        keep = np.all((lo_k[i] <= hi_k[j]) & (lo_k[j] <= hi_k[i]), axis=1)
+        i, j = i[keep], j[keep]
+    a, b = order[i[i != j]], order[j[i != j]]
+    a, b = np.minimum(a, b), np.maximum(a, b)
+    rows = np.lexsort((b, a))
+    return np.stack([a[rows], b[rows]], axis=1)
+
+
+def _leaf_boxes(v, tri):
+    """Triangle boxes (lo, hi) in Morton order of their centres (10 bits an axis), padded
+    to a power of two with empty boxes (lo = inf > hi = -inf, overlapping nothing), and
+    that order."""
     p = v[tri]
     lo, hi = p.min(axis=1), p.max(axis=1)
-    size = np.median(np.max(hi - lo, axis=1))
-    size = size if size > 0 else 1.0
-    origin = lo.min(axis=0)
-    while True:  # cells of the median triangle's size, larger while long ones fill too many
-        c0 = np.floor((lo - origin) / size).astype(np.int64)
-        c1 = np.floor((hi - origin) / size).astype(np.int64)
-        span = c1 - c0 + 1
-        count = span.prod(axis=1)
-        if count.sum() <= 8 * len(tri):
-            break
-        size *= 1.5
-    owner = np.repeat(np.arange(len(tri)), count)
-    offs = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
-    sy, sz = span[owner, 1], span[owner, 2]
-    cell = c0[owner] + np.stack([offs // (sy * sz), (offs // sz) % sy, offs % sz], axis=1)
-    dims = c1.max(axis=0) + 1
-    key = (cell[:, 0] * dims[1] + cell[:, 1]) * dims[2] + cell[:, 2]
-    order = np.lexsort((owner, key))
-    key, owner = key[order], owner[order]
-    # Every pair within a cell, at once: element i of a cell pairs with the ones after it.
-    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]])
-    ends = np.r_[starts[1:], key.size]
-    end_of = np.repeat(ends, ends - starts)
-    after = end_of - np.arange(key.size) - 1
-    left = np.repeat(np.arange(key.size), after)
-    step = np.arange(left.size) - np.repeat(np.cumsum(after) - after, after) + 1
-    a, b = owner[left], owner[left + step]
-    overlap = np.all((lo[a] <= hi[b]) & (lo[b] <= hi[a]), axis=1)
-    code = np.unique(a[overlap] * np.int64(len(tri)) + b[overlap])
-    return np.stack([code // len(tri), code % len(tri)], axis=1)
+    centre = 0.5 * (lo + hi)
+    low = centre.min(axis=0) if len(tri) else np.zeros(3)
+    span = np.ptp(centre, axis=0).max() if len(tri) else 1.0
+    cell = np.floor((centre - low) / (span if span > 0 else 1.0) * 1023.0).astype(np.int64)
+    code = np.zeros(len(tri), np.int64)
+    for bit in range(10):
+        for axis in range(3):
+            code |= ((cell[:, axis] >> bit) & 1) << (3 * bit + axis)
+    order = np.argsort(code, kind="stable")
+    size = 1 << max(1, int(np.ceil(np.log2(max(len(tri), 2)))))
+    out_lo, out_hi = np.full((size, 3), np.inf), np.full((size, 3), -np.inf)
+    out_lo[:len(tri)], out_hi[:len(tri)] = lo[order], hi[order]
+    return out_lo, out_hi, order
+
+
+def _tree_boxes(lo, hi):
+    """[(lo, hi), ...] per level from the root (one box) to the leaves, each node's box the
+    union of its two children's."""
+    levels = []
+    while len(lo) > 1:
+        levels.append((lo, hi))
+        lo = np.minimum(lo[0::2], lo[1::2])
+        hi = np.maximum(hi[0::2], hi[1::2])
+    levels.append((lo, hi))
+    return levels[::-1]
+
+
+def _children(i, j):
+    """The child pairs of node pairs (i, j), i <= j, one level down: a node with itself
+    gives its two children each with itself and with each other, two nodes the four
+    pairs of their children."""
+    same = i == j
+    si, di, dj = i[same], i[~same], j[~same]
+    ci = np.concatenate([2 * si, 2 * si, 2 * si + 1,
+                         2 * di, 2 * di, 2 * di + 1, 2 * di + 1])
+    cj = np.concatenate([2 * si, 2 * si + 1, 2 * si + 1,
+                         2 * dj, 2 * dj + 1, 2 * dj, 2 * dj + 1])
+    return ci, cj
 
 
 def self_intersections(vertices, triangles):
@@ -186,13 +216,84 @@ def self_intersections(vertices, triangles):
     shared = (ta[:, :, None] == tb[:, None, :])
     n_shared = shared.sum(axis=(1, 2))
     bad = np.zeros(len(pairs), bool)
-    none = n_shared == 0
+    none = np.flatnonzero(n_shared == 0)
+    none = none[~_apart(v[ta[none]], v[tb[none]])] if none.size else none
     bad[none] = triangles_intersect(v[ta[none]], v[tb[none]])
-    for k, test in ((1, _one_shared), (2, _folded)):
-        sel = np.flatnonzero(n_shared == k)
+    one = np.flatnonzero(n_shared == 1)
+    one = one[~_apart_at(v, ta[one], tb[one], shared[one])] if one.size else one
+    for sel, test in ((one, _one_shared), (np.flatnonzero(n_shared == 2), _folded)):
         if sel.size:
             bad[sel] = test(v, ta[sel], tb[sel], shared[sel])
     return pairs[bad]
+
+
+#: A float projection decides only by more than this share of the size of the points
+#: projected (times the axis' length); its rounding is some 1e-16 of that.
+MARGIN = 1e-10
+
+
+def _separated(pa, pb, axes, origin, touching=False):
+    """(k,) bool, a sufficient test in floats: on some axis (k, n, 3), the points pa (k, m,
+    3) project all below those of pb, or all above, by more than :data:`MARGIN` (any axis
+    serves; the margin covers the rounding); with ``touching``, on either side of
+    ``origin`` (k, 3), the point both share."""
+    def project(p):
+        q = p - origin[:, None]
+        return sum(q[:, :, None, j] * axes[:, None, :, j] for j in range(3))   # (k, m, n)
+
+    da, db = project(pa), project(pb)
+    size = np.maximum(np.abs(pa).max(axis=(1, 2)), np.abs(pb).max(axis=(1, 2)))
+    tol = MARGIN * np.abs(axes).sum(axis=2) * size[:, None]      # (k, n), |axis|_1 >= |axis|
+    lo_a, hi_a, lo_b, hi_b = da.min(1), da.max(1), db.min(1), db.max(1)
+    if touching:
+        gap = np.maximum(np.minimum(lo_b, -hi_a), np.minimum(lo_a, -hi_b))
+    else:
+        gap = np.maximum(lo_b - hi_a, lo_a - hi_b)
+    return np.any(gap > tol, axis=1)
+
+
+def _apart(pa, pb):
+    """(k,) bool: triangles pa, pb (k, 3, 3) that certainly do not meet (a float test with
+    a margin, :func:`_separated`; the exact predicates decide the rest), tried where their
+    planes are parallel (:func:`_parallel`): one's plane or an edge's line in it (the axis
+    across the edge in that plane) has the other on its far side. Flat panels in one plane
+    are mostly told apart here, before predicates that could decide them only exactly."""
+    na = np.cross(pa[:, 1] - pa[:, 0], pa[:, 2] - pa[:, 0])
+    nb = np.cross(pb[:, 1] - pb[:, 0], pb[:, 2] - pb[:, 0])
+    out = np.zeros(len(pa), bool)
+    i = np.flatnonzero(_parallel(na, nb))
+    pa, pb, na, nb = pa[i], pb[i], na[i], nb[i]
+    axes = [na, nb] + [np.cross(n, p[:, (k + 1) % 3] - p[:, k])
+                       for n, p in ((na, pa), (nb, pb)) for k in range(3)]
+    out[i] = _separated(pa, pb, np.stack(axes, axis=1), pa[:, 0])
+    return out
+
+
+def _parallel(na, nb):
+    """(k,) bool: normals within about 1e-6 rad of parallel (or a degenerate one): the
+    pairs the exact predicates could decide only slowly, worth a float test first."""
+    cross = np.abs(np.cross(na, nb)).sum(axis=1)
+    return cross <= 1e-6 * np.abs(na).sum(axis=1) * np.abs(nb).sum(axis=1)
+
+
+def _apart_at(v, ta, tb, shared):
+    """(k,) bool: triangles that share one vertex and certainly meet nowhere else (a plane
+    through it has the rest of one on each side, :func:`_separated`), tried where their
+    planes are parallel: in that plane, the lines through the shared vertex halfway between
+    an edge of each."""
+    s = v[ta[shared.any(axis=2)]]
+    pa = v[_opposite(ta, shared.any(axis=2))]      # (k, 2, 3)
+    pb = v[_opposite(tb, shared.any(axis=1))]
+    na = np.cross(pa[:, 0] - s, pa[:, 1] - s)
+    nb = np.cross(pb[:, 0] - s, pb[:, 1] - s)
+    out = np.zeros(len(s), bool)
+    i = np.flatnonzero(_parallel(na, nb))
+    s, pa, pb, na, nb = s[i], pa[i], pb[i], na[i], nb[i]
+    unit = lambda e: e / np.maximum(np.linalg.norm(e, axis=-1, keepdims=True), 1e-300)  # noqa
+    ua, ub = unit(pa - s[:, None]), unit(pb - s[:, None])
+    axes = [np.cross(na, ua[:, i] + ub[:, j]) for i in (0, 1) for j in (0, 1)]
+    out[i] = _separated(pa, pb, np.stack(axes, axis=1), s, touching=True)
+    return out
 
 
 def _opposite(t, mask):
@@ -233,11 +334,9 @@ def check_mesh(vertices, triangles, min_angle=0.0):
     n_bodies, label = _bodies(len(v), tri)
     used = np.zeros(len(v), bool)
     used[tri.ravel()] = True
-    body_of_tri = label[tri[:, 0]]
-    body_of_edge = label[keys[:, 0]]
-    euler = tuple(int(np.sum(used & (label == b)) - np.sum(body_of_edge == b)
-                      + np.sum(body_of_tri == b))
-                  for b in range(n_bodies) if used[label == b].any())
+    count = lambda ids: np.bincount(ids, minlength=n_bodies)  # noqa: E731
+    chi = count(label[used]) - count(label[keys[:, 0]]) + count(label[tri[:, 0]])
+    euler = tuple(int(e) for e in chi[np.unique(label[used])])
     p = v[tri]
     vol = _volume(p)
     shift = np.ptp(v, axis=0) + 1.0
@@ -258,4 +357,4 @@ def check_mesh(vertices, triangles, min_angle=0.0):
         misoriented_edges=int(np.sum(two & (n_forward != 1))), bodies=len(euler), euler=euler,
         volume=vol, volume_shift=moved - vol, intersecting_pairs=int(len(pairs)),
         min_angle=float(angles.min()) if len(tri) else 0.0, min_angle_limit=float(min_angle),
-        examples=examples)
+        examples=examples, pairs=pairs)

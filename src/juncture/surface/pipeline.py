@@ -217,6 +217,8 @@ def _troubled_surfaces(surface, report):
         many = uses[inverse] > 2          # per directed edge: rows 01, then 12, then 20
         out |= set(np.tile(surface.surface, 3)[many].tolist())
     if report.intersecting_pairs:
-        crossing = self_intersections(surface.vertices, surface.triangles)
+        crossing = report.pairs
+        if crossing is None:
+            crossing = self_intersections(surface.vertices, surface.triangles)
         out |= set(surface.surface[crossing.ravel()].tolist())
     return out
