@@ -380,3 +380,18 @@ def test_the_float_separation_tests_never_separate_triangles_that_meet(jitter):
         assert not _one_shared(v, ta[apart], tb[apart], shared[apart]).any()
     if jitter < 1e-9:
         assert apart.sum() > 0.2 * n
+
+
+def test_triangles_in_one_plane_overlapping_at_a_shared_corner_intersect():
+    # Oracle: the triangles' areas. Two triangles in one plane (a tilted one and z = 0)
+    # around a shared corner overlap beyond it exactly when their angles at it overlap;
+    # a fan whose triangles only touch along no edge is clean.
+    for rot in (np.eye(3), np.array([[0.6, 0.0, 0.8], [0.0, 1.0, 0.0], [-0.8, 0.0, 0.6]])):
+        v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 0.25, 0], [0.25, 1, 0],
+                      [-1, 0.5, 0], [-1, -1, 0]], float) @ rot.T
+        over = self_intersections(v, np.array([[0, 1, 2], [0, 3, 4]]))  # inside a's angle
+        assert len(over) == 1
+        apart = self_intersections(v, np.array([[0, 1, 2], [0, 5, 6]]))  # beside it
+        assert len(apart) == 0
+        along = self_intersections(v, np.array([[0, 1, 2], [0, 6, 1]]))  # share edge 0-1
+        assert len(along) == 0

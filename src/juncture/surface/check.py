@@ -310,7 +310,37 @@ def _one_shared(v, ta, tb, shared):
                                  v[tb[:, 2]])
     hit |= segments_hit_triangles(v[ob[:, 0]], v[ob[:, 1]], v[ta[:, 0]], v[ta[:, 1]],
                                   v[ta[:, 2]])
+    s = v[ta[shared.any(axis=2)]]
+    pa, pb = v[oa], v[ob]
+    flat = np.ones(len(s), bool)
+    for k in (0, 1):          # the rest of b in a's plane: the segment tests see no crossing
+        flat &= orient3d(s, pa[:, 0], pa[:, 1], pb[:, k]) == 0
+    i = np.flatnonzero(flat & ~hit)
+    if i.size:
+        hit[i] = _cones_overlap(s[i], pa[i], pb[i])
     return hit
+
+
+def _cones_overlap(s, pa, pb):
+    """(k,) bool for triangles (s, pa) and (s, pb) in one plane sharing the corner s (pa, pb:
+    (k, 2, 3)): they overlap beyond s exactly when an edge from s of one lies in the other's
+    (closed) angle at s (exact: orient2d in the plane's best 2-D projection). Triangles of
+    no area are left to the other tests."""
+    from .predicates import orient2d
+
+    n = np.abs(np.cross(pa[:, 0] - s, pa[:, 1] - s) + np.cross(pb[:, 0] - s, pb[:, 1] - s))
+    keep = np.array([[1, 2], [0, 2], [0, 1]])[np.argmax(n, axis=1)]
+    take = lambda p: np.take_along_axis(p, keep, axis=1)  # noqa: E731
+    s2 = take(s)
+    out = np.zeros(len(s), bool)
+    for (p, q), others in (((pa[:, 0], pa[:, 1]), pb), ((pb[:, 0], pb[:, 1]), pa)):
+        p2, q2 = take(p), take(q)
+        turn = orient2d(s2, p2, q2)
+        for k in (0, 1):
+            r2 = take(others[:, k])
+            out |= ((turn != 0) & (orient2d(s2, p2, r2) * turn >= 0)
+                    & (orient2d(s2, r2, q2) * turn >= 0))
+    return out
 
 
 def _folded(v, ta, tb, shared):
