@@ -186,6 +186,9 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     if not refine and _drop_flat_apexes(patch, splits, gid, local):
         return _AGAIN        # no seam points are added now: triangulate again at once
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
+    if tol is not False:
+        far = np.concatenate([far, _chords(tri, patch, splits, vertices, pts, gid, local,
+                                           boundary)])
     if len(far):
         patch.extra_uv.append(far)
         patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, far)[0]))
@@ -255,6 +258,31 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
     # crease, where every triangle astride it turns, splitting would not end)
     small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
     return centre[((dev > tol) | turns) & ~small | across | bent]
+
+
+def _chords(tri, patch, splits, vertices, pts, gid, local, boundary):
+    """Chart midpoints of the edges that join two boundary points across the patch (not
+    along a boundary piece) and leave its surface: in 3-D such a chord can cut through the
+    body, e.g. from the top to the bottom of a half-fuselage near its nose, where the image
+    half makes the same edge (four triangles on it). Off the surface means its midpoint
+    more than a thousandth of the edge from the patch at the chart midpoint."""
+    fixed = {(min(e.v1, e.v2) - SUPER, max(e.v1, e.v2) - SUPER)
+             for e in tri.fixed_edges_iter()}
+    ends = np.concatenate([local[:, [0, 1]], local[:, [1, 2]], local[:, [2, 0]]])
+    ends = np.unique(np.sort(ends, axis=1), axis=0)
+    ends = ends[boundary[ends, 0].all(axis=1)]
+    if not len(ends):
+        return np.zeros((0, 2))
+    ends = ends[[tuple(e) not in fixed for e in ends.tolist()]]
+    if not len(ends):
+        return np.zeros((0, 2))
+    mid = pts[ends].mean(axis=1)
+    on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
+    if patch.lift is not None:
+        on = _lifted(patch, on, under, mid)
+    xyz = splits.all()[gid[ends]]
+    off = np.linalg.norm(on - xyz.mean(axis=1), axis=1)
+    return mid[off > 1e-3 * np.linalg.norm(xyz[:, 1] - xyz[:, 0], axis=1)]
 
 
 def _bent(patch, splits, vertices, pts, gid, local, shape):
