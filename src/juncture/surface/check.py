@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import DeckError
-from .predicates import orient3d, segments_hit_triangles, triangles_intersect
+from .predicates import orient2d, orient3d, segments_hit_triangles, triangles_intersect
 from .quality import triangle_angles
 
 __all__ = ["CheckReport", "check_mesh", "read_triangles", "self_intersections"]
@@ -291,7 +291,7 @@ def _apart_at(v, ta, tb, shared):
     s, pa, pb, na, nb = s[i], pa[i], pb[i], na[i], nb[i]
     unit = lambda e: e / np.maximum(np.linalg.norm(e, axis=-1, keepdims=True), 1e-300)  # noqa
     ua, ub = unit(pa - s[:, None]), unit(pb - s[:, None])
-    axes = [np.cross(na, ua[:, i] + ub[:, j]) for i in (0, 1) for j in (0, 1)]
+    axes = [np.cross(na, ua[:, k] + ub[:, m]) for k in (0, 1) for m in (0, 1)]
     out[i] = _separated(pa, pb, np.stack(axes, axis=1), s, touching=True)
     return out
 
@@ -326,8 +326,6 @@ def _cones_overlap(s, pa, pb):
     (k, 2, 3)): they overlap beyond s exactly when an edge from s of one lies in the other's
     (closed) angle at s (exact: orient2d in the plane's best 2-D projection). Triangles of
     no area are left to the other tests."""
-    from .predicates import orient2d
-
     n = np.abs(np.cross(pa[:, 0] - s, pa[:, 1] - s) + np.cross(pb[:, 0] - s, pb[:, 1] - s))
     keep = np.array([[1, 2], [0, 2], [0, 1]])[np.argmax(n, axis=1)]
     take = lambda p: np.take_along_axis(p, keep, axis=1)  # noqa: E731
