@@ -249,13 +249,19 @@ def test_surfaces_that_cross_when_re_triangulated_keep_their_own_triangles(monke
 
 
 @pytest.mark.slow
-def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own():
+def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monkeypatch):
     """A generated airplane with a cubic fillet and keep_area (tests/data/generated/README.md)
-    where two re-triangulated surfaces make the same triangle at a narrow corner: kept as
-    assembled there, the airplane passes every check."""
+    where two re-triangulated surfaces made the same triangle at a narrow corner, an edge
+    across each patch between two of its boundary points: such edges are now split
+    (remesh.CHORD) and the first re-triangulation passes every check. Without that split,
+    the surfaces that make the triangle are kept as assembled, and the airplane passes."""
+    import juncture.surface.remesh as rm
+
     geo = _geo(DATA / "generated" / "remesh" / "fillet_corner_shared_when_re_triangulated.inp",
                fillet="cubic", keep_area=True)
     assembled = assemble(geo)
+    assert check_mesh(*_arrays(remesh(assembled))).ok
+    monkeypatch.setattr(rm, "CHORD", np.inf)
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).nonmanifold_edges > 0
     _kept_where_needed(assembled)

@@ -78,6 +78,9 @@ FINEST = 1e-3
 #: A triangle with a 3-D angle under this [deg] loses the vertex opposite
 #: its longest edge where refinement put it there (:func:`_drop_flat_apexes`).
 FLAT3D = 6.0
+#: An edge between two boundary points across a patch whose middle stands off the patch by
+#: more than this share of its length goes through the body (:func:`_chords`).
+CHORD = 0.1
 
 
 class _Shape(NamedTuple):
@@ -265,7 +268,8 @@ def _chords(tri, patch, splits, vertices, pts, gid, local, boundary):
     along a boundary piece) and leave its surface: in 3-D such a chord can cut through the
     body, e.g. from the top to the bottom of a half-fuselage near its nose, where the image
     half makes the same edge (four triangles on it). Off the surface means its midpoint
-    more than a thousandth of the edge from the patch at the chart midpoint."""
+    more than :data:`CHORD` times the edge from the patch at the chart midpoint (a chord
+    across a corner of a curved patch stands off by far less)."""
     fixed = {(min(e.v1, e.v2) - SUPER, max(e.v1, e.v2) - SUPER)
              for e in tri.fixed_edges_iter()}
     ends = np.concatenate([local[:, [0, 1]], local[:, [1, 2]], local[:, [2, 0]]])
@@ -282,7 +286,7 @@ def _chords(tri, patch, splits, vertices, pts, gid, local, boundary):
         on = _lifted(patch, on, under, mid)
     xyz = splits.all()[gid[ends]]
     off = np.linalg.norm(on - xyz.mean(axis=1), axis=1)
-    return mid[off > 1e-3 * np.linalg.norm(xyz[:, 1] - xyz[:, 0], axis=1)]
+    return mid[off > CHORD * np.linalg.norm(xyz[:, 1] - xyz[:, 0], axis=1)]
 
 
 def _bent(patch, splits, vertices, pts, gid, local, shape):
