@@ -140,6 +140,12 @@ def check_keep_area(text, desc):
             # Each must be refused in one line naming the body, the station and (for the
             # second) what to change; every check below on the runs that complete holds.
             msg = str(exc)
+            if "only through an open end" in msg:
+                # the re-designed (thinner) body leaves a lofting line entering it only
+                # through its open end: refused by name, saying what to change
+                # (tests/test_complete_misses.py)
+                assert "\n" not in msg and "lofting line" in msg and "Close" in msg, msg
+                return
             assert "\n" not in msg and msg.startswith("body") and "x = " in msg, msg
             if not isinstance(exc, jc.ConvergenceError):  # (a GeometryError subclass)
                 assert "can give up" in msg and "use a smaller fillet" in msg, msg
