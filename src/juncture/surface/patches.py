@@ -58,6 +58,7 @@ class Patch:
     lift: object = None                  # lift(points, corners, component, surface)
     free: np.ndarray | None = None       # boundary edges whose split points stay on them
     near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2)
+    keys: list | None = None             # boundary edges as (global a, global b), a < b
 
 
 def patches(mesh):

@@ -91,37 +91,53 @@ class _Shape(NamedTuple):
 
 def _inputs(patch, splits):
     """Chart points (originals, then split points, then interior points), their global ids,
-    the constraint pieces (the boundary with its split points, chart ids), per piece its
-    original edge (global ids) and the fractions of its ends along it, and whether the
-    piece is free (its split points stay on the straight edge, not lifted)."""
+    the constraint pieces (the boundary with its split points, chart ids), the pieces'
+    original edges (global ids) and the fractions of their ends along them (``parent``:
+    four arrays), and whether each piece is free (its split points stay on the straight
+    edge, not lifted)."""
     keep = np.flatnonzero(patch.kept)
     where = np.cumsum(patch.kept) - 1
-    uv, ids, cons, parent, free = [patch.uv[keep]], [patch.ids[keep]], [], [], []
-    n = len(keep)
-    edge_free = np.ones(len(patch.edges), bool) if patch.free is None else patch.free
-    for (i, j), loose in zip(patch.edges.tolist(), edge_free.tolist()):
-        gi, gj = int(patch.ids[i]), int(patch.ids[j])
-        t, sid = splits.along(gi, gj)
-        chain = [int(where[i]), *range(n, n + len(t)), int(where[j])]
-        frac = np.concatenate([[0.0], t, [1.0]])
-        if len(t):
-            uv.append(patch.uv[i] + t[:, None] * (patch.uv[j] - patch.uv[i]))
-            ids.append(sid)
-            n += len(t)
-        cons.extend(zip(chain[:-1], chain[1:]))
-        parent.extend((gi, gj, frac[k], frac[k + 1]) for k in range(len(chain) - 1))
-        free.extend([loose] * (len(chain) - 1))
+    i, j = patch.edges[:, 0], patch.edges[:, 1]
+    gi, gj = patch.ids[i], patch.ids[j]
+    count = np.zeros(len(i), np.int64)
+    t, sid = [np.zeros(0)], [np.zeros(0, np.int64)]
+    for k in [k for k, key in enumerate(_keys(patch)) if key in splits.on]:
+        got = splits.along(int(gi[k]), int(gj[k]))
+        count[k] = len(got[0])
+        t.append(got[0])
+        sid.append(got[1])
+    t, sid = np.concatenate(t), np.concatenate(sid)
+    edge = np.repeat(np.arange(len(i)), count + 1)            # per piece, its edge
+    pos = np.arange(len(edge)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
+    first = (np.cumsum(count) - count)[edge] + pos             # its split point, if any
+    last = pos == count[edge]
+    a = np.where(pos == 0, where[i][edge], len(keep) + first - 1)
+    b = np.where(last, where[j][edge], len(keep) + first)
+    frac = np.concatenate([t, [0.0, 1.0]])
+    parent = (gi[edge], gj[edge], frac[np.where(pos == 0, -2, first - 1)],
+              frac[np.where(last, -1, first)])
+    on = np.repeat(np.arange(len(i)), count)
+    uv = [patch.uv[keep], patch.uv[i[on]] + t[:, None] * (patch.uv[j[on]] - patch.uv[i[on]])]
+    ids = [patch.ids[keep], sid]
     if patch.extra_uv:
         uv.append(np.concatenate(patch.extra_uv))
         ids.append(np.concatenate(patch.extra_id))
-    return (np.concatenate(uv), np.concatenate(ids), np.array(cons, np.uint32), parent,
-            np.array(free, bool))
+    free = np.ones(len(i), bool) if patch.free is None else patch.free
+    return (np.concatenate(uv), np.concatenate(ids), np.stack([a, b], 1).astype(np.uint32),
+            parent, free[edge])
+
+
+def _keys(patch):
+    """The patch's boundary edges as (global a, global b) with a < b (made once)."""
+    if patch.keys is None:
+        ends = np.sort(patch.ids[patch.edges], axis=1)
+        patch.keys = list(map(tuple, ends.tolist()))
+    return patch.keys
 
 
 def _known(patch, splits):
     """How many split points lie on the patch's boundary edges."""
-    return sum(len(splits.along(int(patch.ids[i]), int(patch.ids[j]))[0])
-               for i, j in patch.edges.tolist())
+    return splits.count(_keys(patch))
 
 
 def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
@@ -190,7 +206,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         return _AGAIN        # no seam points are added now: triangulate again at once
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
     if tol is not False:
-        far = np.concatenate([far, _chords(tri, patch, splits, vertices, pts, gid, local,
+        far = np.concatenate([far, _chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
     if len(far):
         patch.extra_uv.append(far)
@@ -250,36 +266,30 @@ def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
         bent = inner & _bent(patch, splits, vertices, pts, gid, local, shape)
     else:
         bent = np.zeros(len(local), bool)
-    turns = np.zeros(len(local), bool)
-    n0 = patch.normals[under]
-    for k in range(3):
-        corner = pts[local[:, k]] + 1e-3 * (centre - pts[local[:, k]])  # inside, not on
-        nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids], corner,
-                                  patch.find)[1]]
-        turns |= np.einsum("ij,ij->i", n0, nk) < shape.turn
+    corners = pts[local] + 1e-3 * (centre[:, None] - pts[local])     # inside, not on
+    nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids],
+                              corners.reshape(-1, 2), patch.find)[1]].reshape(-1, 3, 3)
+    turns = (np.einsum("ij,ikj->ik", patch.normals[under], nk) < shape.turn).any(axis=1)
     # a triangle far smaller than the input triangle under it is not split again (at a
     # crease, where every triangle astride it turns, splitting would not end)
     small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
     return centre[((dev > tol) | turns) & ~small | across | bent]
 
 
-def _chords(tri, patch, splits, vertices, pts, gid, local, boundary):
+def _chords(patch, splits, vertices, pts, gid, local, boundary):
     """Chart midpoints of the edges that join two boundary points across the patch (not
     along a boundary piece) and leave its surface: in 3-D such a chord can cut through the
     body, e.g. from the top to the bottom of a half-fuselage near its nose, where the image
     half makes the same edge (four triangles on it). Off the surface means its midpoint
     more than :data:`CHORD` times the edge from the patch at the chart midpoint (a chord
     across a corner of a curved patch stands off by far less)."""
-    fixed = {(min(e.v1, e.v2) - SUPER, max(e.v1, e.v2) - SUPER)
-             for e in tri.fixed_edges_iter()}
     ends = np.concatenate([local[:, [0, 1]], local[:, [1, 2]], local[:, [2, 0]]])
-    ends = np.unique(np.sort(ends, axis=1), axis=0)
-    ends = ends[boundary[ends, 0].all(axis=1)]
-    if not len(ends):
+    ends = np.sort(ends[boundary[ends, 0].all(axis=1)], axis=1)
+    key, uses = np.unique(ends[:, 0] * len(pts) + ends[:, 1], return_counts=True)
+    key = key[uses == 2]          # inside the patch (a boundary piece has one triangle)
+    if not len(key):
         return np.zeros((0, 2))
-    ends = ends[[tuple(e) not in fixed for e in ends.tolist()]]
-    if not len(ends):
-        return np.zeros((0, 2))
+    ends = np.stack([key // len(pts), key % len(pts)], axis=1)
     mid = pts[ends].mean(axis=1)
     on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
     if patch.lift is not None:
@@ -365,8 +375,8 @@ def _edge_points(tri, n, cons, parent, uv, pts):
             a, b = (int(x) for x in cons[k])
             d = uv[b] - uv[a]
             s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
-            gi, gj, ta, tb = parent[k]
-            out[v] = (gi, gj, ta + s * (tb - ta))
+            ta, tb = float(parent[2][k]), float(parent[3][k])
+            out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
     return out
 
 

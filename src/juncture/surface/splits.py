@@ -72,6 +72,11 @@ class Splits:
         t, ids = self._sorted[key]
         return (t, ids) if a < b else (1.0 - t[::-1], ids[::-1])
 
+    def count(self, keys):
+        """How many split points lie on the edges ``keys`` ((a, b) with a < b)."""
+        on = self.on
+        return sum(len(on[k]) for k in keys if k in on)
+
     def all(self):
         return self._xyz[:self.n]
 
