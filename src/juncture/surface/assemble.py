@@ -416,15 +416,17 @@ def _runs_with(tri, loop):
 
 def _imprint_all(geometry, vertices, triangles, component, surface, components):
     """Every footprint (:mod:`juncture.surface.imprint`) cut into its host."""
-    from .imprint import footprints, imprint_many
+    from .imprint import footprints, imprint_many, on_lines
 
+    seams = np.zeros(len(vertices), bool)
+    seams[list(on_lines(geometry, vertices))] = True
     by_host = {}
     for host, loop in footprints(geometry, vertices, triangles, component, components):
         by_host.setdefault(host, []).append(loop)
     cuts = [cut for host, loops in by_host.items()
             for cut in imprint_many(vertices, triangles, np.isin(component, host), loops,
                                     _chart(geometry, [components[h] for h in host],
-                                           vertices[np.concatenate(loops)]))]
+                                           vertices[np.concatenate(loops)]), seams)]
     # Every cut is planned on the triangles as assembled; hosts differ or regions are
     # disjoint, so removing them all at once is safe.
     keep = np.ones(len(triangles), bool)

@@ -134,10 +134,13 @@ def imprint(vertices, triangles, host, loop):
 
 
 class _Host:
-    """The host's triangles with their corners, normals and centres."""
+    """The host's triangles with their corners, normals and centres, and the vertices on
+    intersection lines (``seams``)."""
 
-    def __init__(self, vertices, triangles, host):
+    def __init__(self, vertices, triangles, host, seams=None):
         self.vertices, self.triangles = vertices, triangles
+        self.seams = np.zeros(len(vertices), bool) if seams is None else \
+            np.asarray(seams, bool)
         self.hid = np.flatnonzero(host)
         self.corner = vertices[triangles[self.hid]]
         c = self.corner
@@ -173,10 +176,31 @@ def _plan(h_, loop):
     cand = h_.hid[((unit(h_.normal) @ n > 0.25) | flat) & near]
     if not len(cand):
         return None
-    return n, h, cand[_region(h_.vertices, h_.triangles, cand, uv, uv[loop], h)]
+    region = cand[_region(h_.vertices, h_.triangles, cand, uv, uv[loop], h)]
+    return n, h, _connected(h_, region, h_.hid[under])
 
 
-def imprint_many(vertices, triangles, host, loops, chart=None):
+def _connected(h_, region, seeds):
+    """The triangles of ``region`` reached from ``seeds`` through shared corners that are
+    not on an intersection line (``h_.seams``): the host's surface ends at those, and the
+    margin round a loop under large panels (a wing given by few sections) reaches past
+    them onto another surface of the same network (a four-block layout's body arcs under
+    the wing root). All of ``region`` where no seed is in it."""
+    got = np.intersect1d(region, seeds)
+    if not len(got):
+        return region
+    rest = np.setdiff1d(region, got)
+    while len(rest):
+        through = np.setdiff1d(h_.triangles[got], np.flatnonzero(h_.seams))
+        reached = rest[np.isin(h_.triangles[rest], through).any(axis=1)]
+        if not len(reached):
+            break
+        got = np.union1d(got, reached)
+        rest = np.setdiff1d(rest, reached)
+    return got
+
+
+def imprint_many(vertices, triangles, host, loops, chart=None, seams=None):
     """:func:`imprint` for several loops on one host: loops whose regions share a triangle
     (twin fins either side of the plane of symmetry) are cut together, in one plane, each
     a hole of one triangulation. Returns a list of (removed, new), one per group that could
@@ -185,8 +209,13 @@ def imprint_many(vertices, triangles, host, loops, chart=None):
     ``chart(points)`` (k, 2), optional: the host's own surface parameters (a fuselage's x
     and arc round its axis, :func:`body_chart`), used where the region does not project
     onto one plane without folding (twin fins canted on a tail cone: their common region
-    spans the top of a section that turns aft)."""
-    h_ = _Host(vertices, triangles, host)
+    spans the top of a section that turns aft).
+
+    ``seams`` (n,) bool, optional: the vertices on intersection lines. The region never
+    grows through them: the host's surface ends there (a four-block layout's "wing-body
+    lower" block runs on round the body under the wing root, and its body arcs face the
+    same way and project inside a region of large wing panels)."""
+    h_ = _Host(vertices, triangles, host, seams)
     loops = [np.asarray(lp) for lp in loops if len(lp) >= 3]
     if not len(h_.hid) or not loops:
         return []
@@ -231,7 +260,8 @@ def _cut(h_, loops, n, h, region, flat):
     fill = h_.hid[facing & inside(flat(h_.cent), uv[border])]
     fill = np.setdiff1d(fill, region)
     for _ in range(50):
-        reached = fill[np.isin(triangles[fill], triangles[region]).any(axis=1)]
+        through = np.setdiff1d(triangles[region], np.flatnonzero(h_.seams))
+        reached = fill[np.isin(triangles[fill], through).any(axis=1)]
         if not len(reached):
             break
         region = np.union1d(region, reached)
@@ -306,16 +336,9 @@ def hosts_of(name, components):
     return tuple(out)
 
 
-def footprints(geometry, vertices, triangles, component, components):
-    """Loops to imprint: ``[(host component indices, loop)]`` for every open boundary loop of
-    a component made (mostly) of its intersection points with another component.
-
-    The intersection lines ``"a/b side"`` of ``geometry`` name the standing component ``a``
-    and the host ``b`` (:func:`hosts_of`: the components that carry ``b``'s surface); their
-    mirror images count for the image half.
-    """
-    from .assemble import boundary_loops
-
+def on_lines(geometry, vertices):
+    """{vertex id: {(standing component, host)}} of the vertices that are intersection
+    points of ``geometry`` (bit for bit; mirror images count for the image half)."""
     def keys(points):
         q = np.ascontiguousarray(np.asarray(points, float) + 0.0)
         return q.view(np.dtype((np.void, 24))).ravel()
@@ -332,6 +355,20 @@ def footprints(geometry, vertices, triangles, component, components):
             at = np.minimum(np.searchsorted(vkeys, qk, sorter=order), len(order) - 1)
             for k in order[at][vkeys[order[at]] == qk].tolist():
                 on.setdefault(k, set()).add((a, b))
+    return on
+
+
+def footprints(geometry, vertices, triangles, component, components):
+    """Loops to imprint: ``[(host component indices, loop)]`` for every open boundary loop of
+    a component made (mostly) of its intersection points with another component.
+
+    The intersection lines ``"a/b side"`` of ``geometry`` name the standing component ``a``
+    and the host ``b`` (:func:`hosts_of`: the components that carry ``b``'s surface); their
+    mirror images count for the image half.
+    """
+    from .assemble import boundary_loops
+
+    on = on_lines(geometry, vertices)
     out = []
     for loop in boundary_loops(triangles):
         pairs = [on.get(int(x), set()) for x in loop]
