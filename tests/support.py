@@ -69,3 +69,48 @@ def section_area(vertices, triangles, x):
     flip = np.einsum("ij,ij->i", v - u, np.cross(n, [1.0, 0.0, 0.0])) < 0
     u[flip], v[flip] = v[flip].copy(), u[flip].copy()
     return abs(0.5 * np.sum(u[:, 1] * v[:, 2] - u[:, 2] * v[:, 1]))
+
+
+def junctions_overlap(cfg, a, b, host):
+    """Whether the junctions of components ``a`` and ``b`` with the body ``host`` overlap
+    on it, tested point by point (not juncture.crossings' polygons): some point of one's
+    intersection lines (their points and 19 more along each chord between them) lies round
+    the body's axis strictly between the other's two lines at its x (each line's angle
+    interpolated along x)."""
+    import numpy as np
+
+    from juncture.intersect.pairs import Pair, intersect_pair
+
+    body = cfg[host]
+
+    def angle(p):
+        c = body.center_at(p[:, 0])
+        return np.arctan2(p[:, 2] - c[:, 1], p[:, 1] - c[:, 0])
+
+    def lines(name):
+        out = []
+        for r in intersect_pair(cfg, Pair(name, host, "body")):
+            p = r.points[np.all(np.isfinite(r.points), axis=1)]
+            p = p[np.argsort(p[:, 0])]
+            if len(p) > 1:   # 20 points along each chord (bands can cross edge to edge)
+                t = np.linspace(0.0, 1.0, 20, endpoint=False)
+                p = np.concatenate([(p[:-1, None] + t[:, None] * np.diff(p, axis=0)[:, None])
+                                    .reshape(-1, 3), p[-1:]])
+            out.append(p)
+        return out
+
+    def inside(points, two):
+        if not len(points):
+            return False
+        if any(len(q) < 2 for q in two):
+            return False
+        lo_x, hi_x = max(q[:, 0].min() for q in two), min(q[:, 0].max() for q in two)
+        p = points[(points[:, 0] >= lo_x) & (points[:, 0] <= hi_x)]
+        if not len(p):
+            return False
+        t = [np.interp(p[:, 0], q[:, 0], np.unwrap(angle(q))) for q in two]
+        a_p = angle(p)
+        return bool(np.any((np.minimum(*t) < a_p) & (a_p < np.maximum(*t))))
+
+    la, lb = lines(a), lines(b)
+    return inside(np.concatenate(la), lb) or inside(np.concatenate(lb), la)

@@ -19,6 +19,7 @@ from typing import Literal
 
 import numpy as np
 
+from .crossings import refuse_crossing_regions
 from .errors import GeometryError, OptionError
 from .fillet.area import fillet_added_area
 from .fillet.circular import circular_fillet
@@ -507,6 +508,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     intersections = {f"{wing.name}/{body.name} upper": iu.points,
                      f"{wing.name}/{body.name} lower": lower_points}
     intersections.update(other_inters)
+    refuse_crossing_regions(completed, intersections)
     for k, (net, plane) in other_nets.items():
         nets[k] = net
         if plane is not None:

@@ -151,27 +151,34 @@ def test_the_transport_with_a_fillet_closes(fillet, keep_area):
             assert surface.volume() > sharp + 0.5 * added
 
 
-def test_regions_over_the_same_stations_are_refused_by_name():
-    """A tail whose root runs on over the wing's on the fuselage (tests/data/generated/
-    refused): the split fuselage has no layout between them, so mesh refuses in one line
-    that names both surfaces, the stations and what to move."""
+def test_a_tail_root_running_through_the_wing_root_is_refused_by_name():
+    """A tail whose root begins inside the wing's junction with the fuselage, near the wing's
+    root trailing edge (tests/data/generated/refused): one runs through the other, so
+    complete refuses in one line naming both, the stations and what to move."""
+    from juncture.intersect.pairs import Pair, intersect_pair
+
     deck = DATA / "generated" / "refused" / "tail_root_overlaps_wing_root.inp"
+    cfg = jc.read(deck)
+    # Independently of the refusal's polygon test: the tail's leading-edge point on the
+    # body lies between the wing's upper and lower lines there, round the body's axis.
+    body = cfg["body"]
+
+    def angle(p):
+        c = body.center_at(p[:, 0])
+        return np.arctan2(p[:, 2] - c[:, 1], p[:, 1] - c[:, 0])
+    up, lo = intersect_pair(cfg, Pair("wing", "body", "body"))
+    tail = intersect_pair(cfg, Pair("tail 1", "body", "body"))[0].points[:1]
+    x = tail[0, 0]
+    a_up, a_lo = (np.interp(x, p.points[:, 0], angle(p.points)) for p in (up, lo))
+    assert min(a_up, a_lo) < angle(tail)[0] < max(a_up, a_lo)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", jc.JunctureWarning)
-        geo = jc.complete(jc.read(deck), fillet=None)
-    # Independently: the wing's and the tail's lines on the body overlap in x.
-    def span(a):
-        x = np.concatenate([np.asarray(p)[np.all(np.isfinite(p), axis=1), 0]
-                            for n, p in geo.intersections.items() if n.startswith(a + "/body")])
-        return x.min(), x.max()
-    (wl, wh), (tl, th) = span("wing"), span("tail 1")
-    assert tl < wh and wl < th
-    with pytest.raises(jc.GeometryError) as err:
-        jc.mesh(geo)
+        with pytest.raises(jc.GeometryError) as err:
+            jc.complete(cfg, fillet=None)
     msg = str(err.value)
     assert "\n" not in msg
-    assert "wing and tail 1 meet body over the same stations" in msg
-    assert "move tail 1" in msg
+    assert msg.startswith("tail 1: its junction with body")
+    assert "overlaps that of wing" in msg and "move tail 1 clear of wing" in msg
 
 
 def test_a_canard_buried_past_mid_span_keeps_its_exposed_part():

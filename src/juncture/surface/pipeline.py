@@ -112,7 +112,7 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     report = None
     if check:
         report = check_mesh(surface.vertices, surface.triangles)
-        _refuse(geometry, surface, report.failures())
+        _refuse(geometry, surface, report.failures() + _crossing_surfaces(surface, report))
     if failures:
         _not_kept(failures, stacklevel=4)
     return surface, report
@@ -127,6 +127,23 @@ def _not_kept(failures, stacklevel):
     warnings.warn("the re-triangulation for triangle quality was not kept ("
                   + "; ".join(failures) + "): the networks' own triangles are used",
                   JunctureWarning, stacklevel=stacklevel)
+
+
+def _crossing_surfaces(surface, report, most=3):
+    """[one line naming the surfaces whose triangles cross, with a point of each pair] or
+    [] (the report names triangle ids only)."""
+    pairs = report.pairs
+    if pairs is None or not len(pairs):
+        return []
+    names = np.asarray(surface.surfaces)[surface.surface[pairs]]          # (k, 2)
+    names = np.sort(names, axis=1)
+    groups, first, count = np.unique(names, axis=0, return_index=True, return_counts=True)
+    order = np.argsort(-count)[:most]
+    where = surface.vertices[surface.triangles[pairs[first[order], 0]]].mean(axis=1)
+    said = [f"{a} crosses {b} ({n} pairs, near [{', '.join(f'{c:.6g}' for c in p)}])"
+            for (a, b), n, p in zip(groups[order], count[order], where)]
+    more = f" and {len(groups) - most} more" if len(groups) > most else ""
+    return ["surfaces that cross: " + "; ".join(said) + more]
 
 
 def _refuse(geometry, surface, failures):
