@@ -176,3 +176,24 @@ def test_points_on_the_mirror_plane_are_shared_by_both_halves():
     assert surface.areas().min() > 0.0
     assert surface.volume() == pytest.approx(4.0 * 0.5 * 12 * 2.0 ** 2 * np.sin(np.pi / 6),
                                              rel=1e-12)  # length x the 12-gon
+
+
+def test_a_wall_in_the_plane_of_symmetry_made_by_both_halves_is_taken_out():
+    """A half network that runs round its half-section and back down the plane of symmetry
+    (as a wing-body block does where the wing's lines are continued to the plane behind the
+    fuselage's end): with its image, the part in the plane is a wall of no thickness, two
+    triangles on the same three vertices in opposite turns. Both are taken out and the rest
+    is the closed prism (trimmed: watertight; its volume exact)."""
+    import trimesh
+
+    half = _prism(mirror=True)                       # bottom to top round the y >= 0 half
+    down = np.linspace(1.5, -1.5, 5)[1:]             # then down the plane to the bottom
+    wall = np.stack(np.broadcast_arrays(half[:, :1, 0], 0.0 * down[None], down[None]), -1)
+    net = np.concatenate([half, wall], axis=1)
+    geo = Geometry({"pod": net}, symmetry={"pod": "xz"})
+    mesh = assemble(geo)
+    assert not np.any(np.all(mesh.vertices[mesh.triangles][..., 1] == 0.0, axis=1))
+    assert mesh.open_loops == ()
+    tm = trimesh.Trimesh(mesh.vertices, mesh.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    assert mesh.volume() == pytest.approx(_polygon_area(24, 1.5) * 5.0, rel=1e-13)

@@ -458,6 +458,28 @@ def _chart(geometry, names, points):
 ON_PLANE = 1e-12
 
 
+def _off_plane(geometry, nets, vertices, triangles, surface):
+    """(m,) bool: False for the triangles of a network with a mirror image that lie wholly
+    in its plane of symmetry (every corner on it exactly, as :func:`_on_plane` puts them).
+    The image covers the same region of the plane from the other side: a wall of no
+    thickness (a wing whose root runs on behind the fuselage's end, its lofting lines
+    continued to the plane there: the panel between the upper and lower surfaces' end
+    points lies inside the wing). Without both halves' copies, each edge round the region
+    keeps its two other triangles, one from each half."""
+    from ..geometry import _AXIS_OF_PLANE
+
+    names = list(nets)
+    keep = np.ones(len(triangles), bool)
+    for plane in set(geometry.symmetry.values()):
+        axis = _AXIS_OF_PLANE[plane]
+        halves = [k for k, n in enumerate(names)
+                  if (n.endswith(" image") and geometry.symmetry.get(n[:-6]) == plane)
+                  or (f"{n} image" in nets and geometry.symmetry.get(n) == plane)]
+        flat = np.all(vertices[triangles][..., axis] == 0.0, axis=1)
+        keep &= ~(flat & np.isin(surface, halves))
+    return keep
+
+
 def _on_plane(geometry, nets):
     """``nets`` with the points of mirrored networks that lie on their plane put on it
     exactly, in the network and in its image (mirrored or made on its own), so that the two
@@ -512,6 +534,7 @@ def assemble(geometry, mirror=True, cap=True):
     component, surface = np.concatenate(comp_id), np.concatenate(surf_id)
     keep = (triangles[:, 0] != triangles[:, 1]) & (triangles[:, 1] != triangles[:, 2]) & \
         (triangles[:, 2] != triangles[:, 0])
+    keep &= _off_plane(geometry, nets, vertices, triangles, surface) if mirror else True
     triangles, component, surface = triangles[keep], component[keep], surface[keep]
     for _ in range(3):  # a triangle with two seam edges gets its second fan next pass
         triangles, parent = split_seams(vertices, triangles, component)
