@@ -367,3 +367,25 @@ def test_no_edge_cuts_across_a_half_fuselage():
         surface = jc.mesh(geo)
     volume = union_volume(geo.configuration, n=121, cells=1500)
     assert abs(surface.volume() / volume - 1.0) < 0.03
+
+
+def test_interior_points_that_repeat_a_chart_point_are_dropped():
+    """PythonCDT refuses a repeated vertex ("Duplicate vertex detected"); a centre taken
+    again beside a boundary piece of almost no length repeated an interior point bit for bit
+    on a held-out airplane (seed 9696, draw 10, cubic fillet), and its wing kept its network
+    triangles. Interior points equal to a boundary point or to an earlier interior point
+    are dropped with their ids; the others stay in order."""
+    from types import SimpleNamespace
+
+    from juncture.surface.remesh import _drop_repeated
+
+    fixed = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+    patch = SimpleNamespace(
+        extra_uv=[np.array([[0.2, 0.2], [1.0, 0.0]]), np.array([[0.3, 0.1], [0.2, 0.2]])],
+        extra_id=[np.array([10, 11]), np.array([12, 13])])
+    _drop_repeated(patch, fixed)
+    assert np.array_equal(np.concatenate(patch.extra_uv), [[0.2, 0.2], [0.3, 0.1]])
+    assert np.array_equal(np.concatenate(patch.extra_id), [10, 12])
+    same = SimpleNamespace(extra_uv=[np.array([[0.5, 0.5]])], extra_id=[np.array([7])])
+    _drop_repeated(same, fixed)
+    assert np.array_equal(same.extra_id[0], [7])

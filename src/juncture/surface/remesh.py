@@ -120,11 +120,32 @@ def _inputs(patch, splits):
     uv = [patch.uv[keep], patch.uv[i[on]] + t[:, None] * (patch.uv[j[on]] - patch.uv[i[on]])]
     ids = [patch.ids[keep], sid]
     if patch.extra_uv:
+        _drop_repeated(patch, np.concatenate(uv))
         uv.append(np.concatenate(patch.extra_uv))
         ids.append(np.concatenate(patch.extra_id))
     free = np.ones(len(i), bool) if patch.free is None else patch.free
     return (np.concatenate(uv), np.concatenate(ids), np.stack([a, b], 1).astype(np.uint32),
             parent, free[edge])
+
+
+def _drop_repeated(patch, fixed):
+    """Drop the patch's interior points that repeat a chart point bit for bit (one of
+    ``fixed``, its boundary points, or an earlier interior point): PythonCDT refuses a
+    repeated vertex, and a centre taken again where the triangles beside a piece of almost
+    no length are flat can repeat one."""
+    extra = np.concatenate(patch.extra_uv)
+    both = np.concatenate([fixed, extra])
+    z = both[:, 0] + 1j * both[:, 1]
+    ordered = np.sort(z)
+    if not np.any(ordered[1:] == ordered[:-1]):
+        return
+    _, first = np.unique(z, return_index=True)
+    keep = np.zeros(len(both), bool)
+    keep[first] = True
+    keep = keep[len(fixed):]
+    if not keep.all():
+        patch.extra_uv = [extra[keep]]
+        patch.extra_id = [np.concatenate(patch.extra_id)[keep]]
 
 
 def _keys(patch):
