@@ -46,10 +46,12 @@ def test_a_staggered_overlap_is_found_with_the_higher_region_and_its_stations():
     assert (ov.high, ov.low, ov.first, ov.m0, ov.m1) == (0, 1, 0, 40.0, 45.0)
     ov = find_overlap([wing[0], canard[0]], [wing[1], canard[1]])
     assert (ov.high, ov.low, ov.first) == (1, 0, 1)
-    # nested (one inside the other's range), or at one height: not handled
+    # nested (one inside the other's range, above it): found, m0 and m1 its ends
     inner = (_region(body, [50, 60, 70], [0.6, 0.7, 0.6]),
              _region(body, [50, 60, 70], [0.6, 0.4, 0.6]))
-    assert find_overlap([inner[0], wing[0]], [inner[1], wing[1]]) is None
+    ov = find_overlap([inner[0], wing[0]], [inner[1], wing[1]])
+    assert (ov.high, ov.low, ov.first, ov.m0, ov.m1, ov.nested) == (0, 1, 1, 50.0, 70.0, True)
+    # at one height: not handled
     level = (_region(body, [20, 30, 45], [-0.2, -0.1, -0.2]),
              _region(body, [20, 30, 45], [-0.2, -0.3, -0.2]))
     assert find_overlap([level[0], wing[0]], [level[1], wing[1]]) is None
@@ -96,3 +98,54 @@ def test_three_blocks_tile_the_section_where_two_regions_overlap():
     assert before[0] < 40.0 < 45.0 < after[0]
     assert tuple((before + 0.0).tolist()) in lo_ends      # before m0: the lower block's
     assert tuple((after + 0.0).tolist()) in up_ends       # after m1: the upper block's
+
+
+def test_three_blocks_tile_the_section_where_a_region_lies_inside_anothers_range():
+    """A canard (high) whose root runs from x = 50 to 70 over a wing's (low) from 40 to 80
+    (seed 9696, draw 16: refused before as "over the same stations"): over [50, 70] the
+    middle block runs from the canard's lower curve to the wing's upper curve; the upper
+    block follows the wing's upper curve outside [50, 70] and the canard's inside, passing
+    twice (two degenerate rows of the middle block, at the upper block's stations next to
+    50 and 70, each one of its row ends); the lower block follows the wing's lower curve."""
+    body = CircularBody("body", np.linspace(0.0, 100.0, 21), np.full(21, 4.0))
+    canard = (_region(body, [50, 60, 70], [0.6, 0.7, 0.6]),
+              _region(body, [50, 60, 70], [0.6, 0.4, 0.6]))
+    wing = (_region(body, [40, 60, 80], [-0.2, -0.1, -0.2]),
+            _region(body, [40, 60, 80], [-0.2, -0.4, -0.2]))
+    nets = split_body(body, [canard[0], wing[0]], [canard[1], wing[1]])
+    mid = nets["body middle"]
+
+    def angle(p):
+        return np.arctan2(p[..., 2], p[..., 1])
+    assert np.all(np.ptp(mid[0], axis=0) == 0) and np.all(np.ptp(mid[-1], axis=0) == 0)
+    real = mid[1:-1]
+    xs = real[:, 0, 0]
+    assert xs.min() == 50.0 and xs.max() == 70.0
+    hi = np.maximum(angle(real[:, 0]), angle(real[:, -1]))
+    lo = np.minimum(angle(real[:, 0]), angle(real[:, -1]))
+    assert np.allclose(hi, np.interp(xs, canard[1].x, canard[1].theta), atol=1e-12)
+    assert np.allclose(lo, np.interp(xs, wing[0].x, wing[0].theta), atol=1e-12)
+    up = nets["body upper"]
+    ends = np.where(np.abs(angle(up[:, 0])) < np.abs(angle(up[:, -1])), angle(up[:, 0]),
+                    angle(up[:, -1]))
+    x = up[:, 0, 0]
+    inside = (x >= 50.0) & (x <= 70.0)
+    assert np.allclose(ends[inside], np.interp(x[inside], canard[0].x, canard[0].theta),
+                       atol=1e-12)
+    wing_part = ((x >= 40.0) & (x < 50.0)) | ((x > 70.0) & (x <= 80.0))
+    switch = {float(mid[0, 0, 0]), float(mid[-1, 0, 0])}
+    plain = wing_part & ~np.isin(x, list(switch))
+    assert np.allclose(ends[plain], np.interp(x[plain], wing[0].x, wing[0].theta),
+                       atol=1e-12)
+    up_pts = {tuple(p) for p in (up.reshape(-1, 3) + 0.0).tolist()}
+    a, b = sorted(switch)
+    assert 40.0 <= a < 50.0 and 70.0 < b <= 80.0
+    assert tuple((mid[0, 0] + 0.0).tolist()) in up_pts
+    assert tuple((mid[-1, 0] + 0.0).tolist()) in up_pts
+    lo_net = nets["body lower"]
+    xl = lo_net[:, 0, 0]
+    in_wing = (xl >= 40.0) & (xl <= 80.0)
+    lo_ends = np.where(np.abs(angle(lo_net[:, 0])) < np.abs(angle(lo_net[:, -1])),
+                       angle(lo_net[:, 0]), angle(lo_net[:, -1]))
+    assert np.allclose(lo_ends[in_wing], np.interp(xl[in_wing], wing[1].x, wing[1].theta),
+                       atol=1e-12)

@@ -98,7 +98,7 @@ def bounding_curve(x, regions, x_nose, x_end, side=0.0):
     """theta_b at stations x from region boundaries (each a Boundary), ``side`` at both ends
     (the horizontal: theta = 0, or arc length 0.5 on an arbitrary-section body)."""
     xs, ths = [x_nose], [side]
-    for reg in sorted(regions, key=lambda r: r.x[0]):
+    for reg in sorted((r for r in regions if r.x.size), key=lambda r: r.x[0]):
         xs.extend(reg.x)
         ths.extend(reg.theta)
     xs.append(x_end)

@@ -22,10 +22,16 @@ leading edge to F's trailing edge; G ending after F), the higher region H and th
   degenerate row of the middle block: at that neighbouring station, every point the block's
   row end, so the middle block's panels fan from it across to the arc at m0 (m1).
 
+Where G lies inside F's range (a canard whose root runs over the wing's, above it), [m0, m1]
+is G's range: the block on G's side follows F's curve outside it and G's inside, passing
+twice (a degenerate row of the middle block at each of its stations next to m0 and m1);
+the other block follows F's other curve throughout, and the middle block runs from G's
+curve facing F to F's curve facing G.
+
 Every row end is a point of a region (its own intersection points, or the exact plane
 point at a body station, :func:`juncture.intersect.stations.plane_points`, where the region
-has one), so the seams close by vertex ids as elsewhere. Nested regions (one inside the
-other's x range) and more than two regions over one station are left to the caller's
+has one), so the seams close by vertex ids as elsewhere. Two regions at one height over
+the same stations and more than two regions over one station are left to the caller's
 refusal (:func:`juncture.surface.pipeline.overlapping_regions`).
 """
 
@@ -44,7 +50,8 @@ class Overlap(NamedTuple):
     low: int         # index of the lower region
     first: int       # index of the region that starts first (F)
     m0: float        # G's leading edge
-    m1: float        # F's trailing edge
+    m1: float        # F's trailing edge (G's, when G lies inside F's range)
+    nested: bool = False   # G starts and ends inside F's range
 
 
 def _span(up, lo):
@@ -72,9 +79,10 @@ def find_overlap(uppers, lowers):
         return None
     f, g = found[0]
     (f0, f1), (g0, g1) = spans[f], spans[g]
-    if not (f0 < g0 < f1 < g1):
-        return None                                     # nested, or sharing an end
-    m0, m1 = g0, f1
+    nested = f0 < g0 < g1 < f1
+    if not (f0 < g0 < f1 < g1 or nested):
+        return None                                     # sharing an end
+    m0, m1 = g0, min(f1, g1)
     mid = np.linspace(m0, m1, 5)[1:-1]
     lo_of = {k: np.interp(mid, lowers[k].x, lowers[k].theta) for k in (f, g)}
     up_of = {k: np.interp(mid, uppers[k].x, uppers[k].theta) for k in (f, g)}
@@ -84,7 +92,7 @@ def find_overlap(uppers, lowers):
         high, low = g, f
     else:
         return None
-    return Overlap(high, low, f, m0, m1)
+    return Overlap(high, low, f, m0, m1, nested)
 
 
 def curve_at(body, region, x):
@@ -149,6 +157,17 @@ def outside_regions(ov, uppers, lowers):
             return restricted(None, region, lambda x: x < ov.m0, None)
         return restricted(None, region, lambda x: x > ov.m1, None)
     ups, los = list(uppers), list(lowers)
+    if ov.nested:   # the outer region's curve facing the inner one outside [m0, m1] only;
+        #             the inner one's curve facing the outer one is the middle block's
+        def outside(x):
+            return (x < ov.m0) | (x > ov.m1)
+        if ov.first == ov.low:
+            ups[ov.low] = restricted(None, uppers[ov.low], outside, None)
+            los[ov.high] = restricted(None, lowers[ov.high], lambda x: x != x, None)
+        else:
+            los[ov.high] = restricted(None, lowers[ov.high], outside, None)
+            ups[ov.low] = restricted(None, uppers[ov.low], lambda x: x != x, None)
+        return ups, los
     ups[ov.low] = cut(uppers[ov.low], ov.low == ov.first)
     los[ov.high] = cut(lowers[ov.high], ov.high == ov.first)
     return ups, los
@@ -158,9 +177,25 @@ def switch_points(body, ov, regions, ups, los, xu, xl):
     """(upper regions, lower regions, middle block's degenerate rows): where each block
     passes from one region to the other (at m0 for the region that starts later, at m1
     for the one that ends first), the block's neighbouring station gets the first
-    region's curve point there (the module docstring)."""
+    region's curve point there (the module docstring); where one region lies inside the
+    other's range, the block on its side passes twice, at the stations next to m0 and m1."""
+    from .body_split import Boundary
+
     ends = []
     ups, los = list(ups), list(los)
+    if ov.nested:   # one block passes to the inner region at m0 and back at m1
+        outer = ov.first
+        block, xs, full = (ups, xu, regions[0]) if outer == ov.low else (los, xl, regions[1])
+        xa, xb = float(xs[xs < ov.m0].max()), float(xs[xs > ov.m1].min())
+        r = block[outer]
+        p, t = curve_at(body, full[outer], [xa, xb])
+        keep = np.isin(full[outer].x, r.x) & ~np.isin(full[outer].x, [xa, xb])
+        x = np.concatenate([full[outer].x[keep], [xa, xb]])
+        pts = None if full[outer].points is None else np.concatenate(
+            [full[outer].points[keep], p])
+        block[outer] = Boundary(x, np.concatenate([full[outer].theta[keep], t]), r.name,
+                                pts, r.exact)
+        return ups, los, [(xa, p[0]), (xb, p[1])]
     for block, xs, full, k in ((ups, xu, regions[0], ov.low), (los, xl, regions[1], ov.high)):
         if k == ov.first:          # clipped ahead of m0: its last station before m0
             x = float(xs[xs < ov.m0].max())

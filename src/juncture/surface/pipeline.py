@@ -17,8 +17,8 @@ __all__ = ["mesh", "finish", "quality", "overlapping_regions"]
 
 def overlapping_regions(geometry):
     """One line per pair of horizontal surfaces (wing, canards, tails) whose intersections
-    with the same body overlap in x (one inside the other's range, or at one height over the
-    overlap: a staggered pair one above the other has a middle block), or [].
+    with the same body overlap in x at one height (a pair one above the other, staggered or
+    one inside the other's range, has a middle block), or [].
 
     The fuselage's upper and lower blocks (TM-4607) are bounded by one region after another
     along the body: two regions side by side over the same stations (a canard whose root
@@ -26,8 +26,8 @@ def overlapping_regions(geometry):
     usually cross each other there too.
     """
     comps = {c.name: c for c in getattr(geometry, "configuration", None) or ()}
-    # The layout makes a middle block only for one staggered pair, one above the other,
-    # and only when no other pair overlaps (juncture.surface.overlap_blocks.find_overlap).
+    # The layout makes a middle block only for one pair, one above the other, and only
+    # when no other pair overlaps (juncture.surface.overlap_blocks.find_overlap).
     stacked = "body middle" in geometry.networks
     spans = {}
     for name, pts in geometry.intersections.items():
