@@ -382,6 +382,8 @@ def _on_surface(patch, vertices, query):
 def _edge_points(tri, n, cons, parent, uv, pts):
     """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
     put on constraint pieces, each on the piece's original edge."""
+    if tri.fixed_edges_count() == len(cons):   # no piece was split
+        return {}
     piece = {}
     for k, (a, b) in enumerate(cons.tolist()):
         piece[(a, b)] = piece[(b, a)] = k
