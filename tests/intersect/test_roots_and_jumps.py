@@ -154,3 +154,31 @@ def test_a_search_that_runs_out_of_iterations_names_its_lines(monkeypatch):
         body_module.intersect_body_both(cfg["wing"], cfg["body"])
     assert str(err.value).startswith("wing: the intersection with body did not converge "
                                      f"(upper lofting line 3, lower lofting line {15 - n + 1})")
+
+
+def test_a_line_grazing_the_surface_bisects_a_bounded_number_of_intervals():
+    """A lofting line along which the error stays a hair above 0 (grazing the surface, as a
+    held-out airplane's line did while keep_area shrank the fuselage): every half of every
+    interval stays open, and their number doubled each round (2**21 intervals, over 20 GB).
+    At most MAX_DIPS are evaluated per round; no inside point is invented; a dip that does
+    reach inside is still found among them."""
+    from juncture.intersect import rays
+
+    lines = np.array([[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]])
+    batches = []
+
+    def grazing(points):                       # points (k, 1, 3): one per interval
+        batches.append(len(points))
+        return np.full(points.shape[:2], 1e-12)
+    found, _, _ = rays._refine_dips(lines, grazing, np.zeros(1, int), np.zeros(1),
+                                    np.ones(1), np.full(1, 1e-12), np.full(1, 1e-12),
+                                    np.ones(1), np.ones(1), max_rounds=30)
+    assert not found[0]
+    assert max(batches) <= rays.MAX_DIPS and len(batches) == 30
+
+    def dip(points):   # inside only near x = 0.3141 (a narrow dip below a grazing line)
+        return np.where(np.abs(points[..., 0] - 0.3141) < 1e-4, -1e-9, 1e-12)
+    found, u, e = rays._refine_dips(lines, dip, np.zeros(1, int), np.zeros(1), np.ones(1),
+                                    np.full(1, 1e-12), np.full(1, 1e-12), np.ones(1),
+                                    np.ones(1), max_rounds=30)
+    assert found[0] and abs(u[0] - 0.3141) < 1e-4 and e[0] < 0

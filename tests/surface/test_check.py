@@ -395,3 +395,33 @@ def test_triangles_in_one_plane_overlapping_at_a_shared_corner_intersect():
         assert len(apart) == 0
         along = self_intersections(v, np.array([[0, 1, 2], [0, 6, 1]]))  # share edge 0-1
         assert len(along) == 0
+
+
+def test_the_integer_stage_takes_rows_in_blocks_with_the_same_signs(monkeypatch):
+    """Python integers take a few hundred bytes each: 570,000 nearly coplanar rows of a
+    held-out airplane's check (seed 9797, draw 3, cubic fillet) took over 20 GB at once.
+    The integer stage runs in blocks of rows; its signs are Fraction determinants' (the
+    oracle), in blocks of 7 rows as in one."""
+    import juncture.surface.predicates as pred
+
+    rng = np.random.default_rng(7)
+    base = rng.normal(size=(50, 3)) * 100.0
+    u, v = rng.normal(size=(2, 50, 3))
+    a, b, c = base, base + u, base + v
+    d = base + 0.3 * u + 0.6 * v + rng.choice([-1e-13, 0.0, 1e-13], size=(50, 1)) * \
+        np.cross(u, v)
+
+    def oracle(p, q, r, s):
+        m = [[Fraction(x) - Fraction(y) for x, y in zip(row, s)] for row in (p, q, r)]
+        det = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+               - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+               + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+        return (det > 0) - (det < 0)
+    want = [oracle(*rows) for rows in zip(a, b, c, d)]
+    whole = _exact3(a, b, c, d)
+    monkeypatch.setattr(pred, "_BLOCK", 7)
+    assert np.array_equal(pred._exact3(a, b, c, d), whole)
+    assert whole.tolist() == want
+    assert np.array_equal(pred._exact2(a[:, :2], b[:, :2], c[:, :2]),
+                          [oracle([*p, 0.0], [*q, 0.0], [0.0, 0.0, 1.0], [*r, 0.0])
+                           for p, q, r in zip(a[:, :2], b[:, :2], c[:, :2])])

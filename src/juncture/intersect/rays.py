@@ -256,12 +256,20 @@ def _first_entering(grid, e):
     return (found, grid[rows, i], grid[rows, i + 1], e[rows, i], e[rows, i + 1], n_cross)
 
 
+#: Intervals :func:`_refine_dips` bisects at once, at most: along a line that grazes the
+#: surface (its error near 0 over a stretch) every half stays open and their number doubles
+#: each round (2**21 intervals, over 20 GB, on a held-out airplane); beyond this, the ones
+#: whose ends lie nearest the surface go on.
+MAX_DIPS = 1 << 15
+
+
 def _refine_dips(lines, error, line_rows, ua, ub, ea, eb, speed, lipschitz, max_rounds=48):
     """Find a point inside the surface between two outside samples, where one may hide.
 
     Intervals [ua, ub] of one lofting-line segment (ua on the tip side) with both ends
     outside are bisected while e_a + e_b <= K * length (otherwise no point of the interval can
-    be inside: the error changes by at most K per unit length). Returns, per interval,
+    be inside: the error changes by at most K per unit length), at most :data:`MAX_DIPS` at
+    a time (those with the smallest e_a + e_b). Returns, per interval,
     whether an inside point was found and where (the tip-most one found).
     """
     n = len(ua)
@@ -274,6 +282,9 @@ def _refine_dips(lines, error, line_rows, ua, ub, ea, eb, speed, lipschitz, max_
         keep = (fa + fb <= lipschitz[idx] * np.abs(b - a) * sp) & ~found[idx]
         if not keep.any():
             break
+        keep = np.flatnonzero(keep)
+        if len(keep) > MAX_DIPS:  # a line grazing the surface: the nearest intervals only
+            keep = keep[np.argsort(fa[keep] + fb[keep], kind="stable")[:MAX_DIPS]]
         idx, a, b, fa, fb, sp = idx[keep], a[keep], b[keep], fa[keep], fb[keep], sp[keep]
         mid = 0.5 * (a + b)
         rows = line_rows[idx]
