@@ -146,6 +146,13 @@ def check_keep_area(text, desc):
                 # (tests/test_complete_misses.py)
                 assert "\n" not in msg and "lofting line" in msg and "Close" in msg, msg
                 return
+            if "only through the face of the step" in msg:
+                # or only through the face of a step between two segments (a line grazing
+                # the shrinking body; before rays.MAX_DIPS its search ran out of memory)
+                assert "\n" not in msg and "lofting line" in msg and \
+                    "Give both segments the same section" in msg, msg
+                assert desc["segments"] > 1, desc
+                return
             assert "\n" not in msg and msg.startswith("body") and "x = " in msg, msg
             if not isinstance(exc, jc.ConvergenceError):  # (a GeometryError subclass)
                 assert "can give up" in msg and "use a smaller fillet" in msg, msg
