@@ -83,10 +83,11 @@ def test_the_triangles_are_re_triangulated_unless_min_angle_is_zero(tmp_path, ca
     assert shares[0] >= 0.97 > shares[1]
 
 
-def test_an_open_surface_is_refused_with_its_cause_first(tmp_path, capsys):
-    """A tail whose root starts ahead of the wing's trailing edge at the wing's own height
-    (tests/data/generated/refused): the command line names the cause, as juncture.mesh
-    does, before the open edges it leads to; one line, exit status 2, nothing written."""
+def test_a_tail_running_through_the_wing_root_is_refused_with_its_cause(tmp_path, capsys):
+    """A tail whose root starts inside the wing's junction with the fuselage, at the wing's
+    own height (tests/data/generated/refused): the command line names the cause as
+    juncture.complete does (the two junctions overlap on the body; before, the mesh's open
+    edges it leads to); one line, exit status 2, nothing written."""
     from tests.support import DATA
 
     deck = DATA / "generated" / "refused" / "tail_root_overlaps_wing_root.inp"
@@ -94,6 +95,6 @@ def test_an_open_surface_is_refused_with_its_cause_first(tmp_path, capsys):
     assert main(["mesh", str(deck), "-o", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1
-    assert "wing and tail 1 meet body over the same stations" in err[0]
-    assert err[0].index("same stations") < err[0].index("edges in more than two")
+    assert "tail 1: its junction with body" in err[0] and "overlaps that of wing" in err[0]
+    assert "move tail 1 clear of wing" in err[0]
     assert not out.exists()
