@@ -275,3 +275,20 @@ def test_curvature_and_depth_bring_the_transport_within_half_a_percent():
     cells = union_volume(geo.configuration, n=201, cells=3000)
     assert abs(sized.volume() / cells - 1.0) < 0.004
     assert abs(sized.volume() / cells - 1.0) < abs(default.volume() / cells - 1.0)
+
+
+def test_regions_at_one_height_over_the_same_stations_are_refused_by_name():
+    """A canard whose root (x 18.1 to 21.0) runs beside the wing's leading edge (18.4) at
+    its height, inside the cubic fillet's region (tests/data/generated/refused; seed 9696,
+    draw 6): the split fuselage has no layout for the body between them, so mesh refuses in
+    one line naming both, the stations and which to move, before what it leads to."""
+    deck = DATA / "generated" / "refused" / "canard_at_the_wing_height_by_its_fillet.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck), fillet="cubic", keep_area=True)
+    with pytest.raises(jc.GeometryError) as err:
+        jc.mesh(geo)
+    msg = str(err.value)
+    assert "\n" not in msg
+    assert "canard 1 and wing meet body over the same stations" in msg
+    assert "move canard 1 clear of the other in x" in msg
