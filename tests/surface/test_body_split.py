@@ -57,6 +57,17 @@ def test_a_staggered_overlap_is_found_with_the_higher_region_and_its_stations():
     assert find_overlap([level[0], wing[0]], [level[1], wing[1]]) is None
 
 
+def _canard_and_wing(canard_x):
+    """A cylinder of radius 4 (length 100), a canard's region at ``canard_x`` above the
+    wing's (x 40 to 80) on it."""
+    body = CircularBody("body", np.linspace(0.0, 100.0, 21), np.full(21, 4.0))
+    canard = (_region(body, canard_x, [0.6, 0.7, 0.6]),
+              _region(body, canard_x, [0.6, 0.4, 0.6]))
+    wing = (_region(body, [40, 60, 80], [-0.2, -0.1, -0.2]),
+            _region(body, [40, 60, 80], [-0.2, -0.4, -0.2]))
+    return body, canard, wing
+
+
 def test_three_blocks_tile_the_section_where_two_regions_overlap():
     """A canard (high) whose trailing edge lies behind the wing's (low) leading edge: at
     every station of the overlap the upper block runs from the top to the canard's upper
@@ -64,11 +75,7 @@ def test_three_blocks_tile_the_section_where_two_regions_overlap():
     from the wing's lower curve to the bottom; the middle block's rows end on the regions'
     own points where it has their stations, and its two degenerate rows are the points
     where the upper (lower) block passes from one region to the other."""
-    body = CircularBody("body", np.linspace(0.0, 100.0, 21), np.full(21, 4.0))
-    canard = (_region(body, [20, 30, 45], [0.6, 0.7, 0.6]),
-              _region(body, [20, 30, 45], [0.6, 0.4, 0.6]))
-    wing = (_region(body, [40, 60, 80], [-0.2, -0.1, -0.2]),
-            _region(body, [40, 60, 80], [-0.2, -0.4, -0.2]))
+    body, canard, wing = _canard_and_wing([20, 30, 45])
     nets = split_body(body, [canard[0], wing[0]], [canard[1], wing[1]])
     mid = nets["body middle"]
 
@@ -107,11 +114,7 @@ def test_three_blocks_tile_the_section_where_a_region_lies_inside_anothers_range
     block follows the wing's upper curve outside [50, 70] and the canard's inside, passing
     twice (two degenerate rows of the middle block, at the upper block's stations next to
     50 and 70, each one of its row ends); the lower block follows the wing's lower curve."""
-    body = CircularBody("body", np.linspace(0.0, 100.0, 21), np.full(21, 4.0))
-    canard = (_region(body, [50, 60, 70], [0.6, 0.7, 0.6]),
-              _region(body, [50, 60, 70], [0.6, 0.4, 0.6]))
-    wing = (_region(body, [40, 60, 80], [-0.2, -0.1, -0.2]),
-            _region(body, [40, 60, 80], [-0.2, -0.4, -0.2]))
+    body, canard, wing = _canard_and_wing([50, 60, 70])
     nets = split_body(body, [canard[0], wing[0]], [canard[1], wing[1]])
     mid = nets["body middle"]
 

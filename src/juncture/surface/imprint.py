@@ -187,16 +187,22 @@ def _connected(h_, region, seeds):
     them onto another surface of the same network (a four-block layout's body arcs under
     the wing root). All of ``region`` where no seed is in it."""
     got = np.intersect1d(region, seeds)
-    if not len(got):
-        return region
-    rest = np.setdiff1d(region, got)
-    while len(rest):
-        through = np.setdiff1d(h_.triangles[got], np.flatnonzero(h_.seams))
-        reached = rest[np.isin(h_.triangles[rest], through).any(axis=1)]
+    return _reach(h_, got, np.setdiff1d(region, got)) if len(got) else region
+
+
+def _reach(h_, got, pool, rounds=None):
+    """``got`` (host triangle ids) with the triangles of ``pool`` reached from it, step by
+    step (at most ``rounds`` steps), through shared corners not on an intersection line."""
+    seams = np.flatnonzero(h_.seams)
+    for _ in range(len(pool) if rounds is None else rounds):
+        if not len(pool):
+            break
+        through = np.setdiff1d(h_.triangles[got], seams)
+        reached = pool[np.isin(h_.triangles[pool], through).any(axis=1)]
         if not len(reached):
             break
         got = np.union1d(got, reached)
-        rest = np.setdiff1d(rest, reached)
+        pool = np.setdiff1d(pool, reached)
     return got
 
 
@@ -258,14 +264,7 @@ def _cut(h_, loops, n, h, region, flat):
     # body can face the same way and project inside too.
     facing = np.ones(len(h_.hid), bool) if n is None else unit(h_.normal) @ n > 0.25
     fill = h_.hid[facing & inside(flat(h_.cent), uv[border])]
-    fill = np.setdiff1d(fill, region)
-    for _ in range(50):
-        through = np.setdiff1d(triangles[region], np.flatnonzero(h_.seams))
-        reached = fill[np.isin(triangles[fill], through).any(axis=1)]
-        if not len(reached):
-            break
-        region = np.union1d(region, reached)
-        fill = np.setdiff1d(fill, reached)
+    region = _reach(h_, region, np.setdiff1d(fill, region), rounds=50)
     # And any host triangle all of whose corners the region uses (a sliver facing nowhere).
     closed = h_.hid[np.isin(triangles[h_.hid], triangles[region]).all(axis=1)]
     region = np.union1d(region, closed)
