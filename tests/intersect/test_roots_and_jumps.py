@@ -159,7 +159,7 @@ def test_a_search_that_runs_out_of_iterations_names_its_lines(monkeypatch):
 def test_a_line_grazing_the_surface_bisects_a_bounded_number_of_intervals():
     """A lofting line along which the error stays a hair above 0 (grazing the surface, as a
     held-out airplane's line did while keep_area shrank the fuselage): every half of every
-    interval stays open, and their number doubled each round (2**21 intervals, over 20 GB).
+    interval stays open, and their number doubled each round (2**21 intervals: out of memory).
     At most MAX_DIPS are evaluated per round; no inside point is invented; a dip that does
     reach inside is still found among them."""
     from juncture.intersect import rays

@@ -399,7 +399,7 @@ def test_triangles_in_one_plane_overlapping_at_a_shared_corner_intersect():
 
 def test_the_integer_stage_takes_rows_in_blocks_with_the_same_signs(monkeypatch):
     """Python integers take a few hundred bytes each: 570,000 nearly coplanar rows of a
-    held-out airplane's check (seed 9797, draw 3, cubic fillet) took over 20 GB at once.
+    held-out airplane's check (seed 9797, draw 3, cubic fillet) ran out of memory at once.
     The integer stage runs in blocks of rows; its signs are Fraction determinants' (the
     oracle), in blocks of 7 rows as in one."""
     import juncture.surface.predicates as pred

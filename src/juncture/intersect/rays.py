@@ -258,7 +258,7 @@ def _first_entering(grid, e):
 
 #: Intervals :func:`_refine_dips` bisects at once, at most: along a line that grazes the
 #: surface (its error near 0 over a stretch) every half stays open and their number doubles
-#: each round (2**21 intervals, over 20 GB, on a held-out airplane); beyond this, the ones
+#: each round (2**21 intervals, out of memory, on a held-out airplane); beyond this, the ones
 #: whose ends lie nearest the surface go on.
 MAX_DIPS = 1 << 15
 

@@ -70,7 +70,7 @@ def _sign(det):
 def _exact3(a, b, c, d):
     """Exact signs of orient3d for rows of (k, 3) points, in blocks of rows (Python
     integers take a few hundred bytes each: 570,000 nearly coplanar rows of a held-out
-    airplane's check took more than 20 GB at once)."""
+    airplane's check ran out of memory at once)."""
     if len(a) > _BLOCK:
         return np.concatenate([_exact3(a[j:j + _BLOCK], b[j:j + _BLOCK], c[j:j + _BLOCK],
                                        d[j:j + _BLOCK]) for j in range(0, len(a), _BLOCK)])
