@@ -418,10 +418,11 @@ def _imprint_all(geometry, vertices, triangles, component, surface, components):
     """Every footprint (:mod:`juncture.surface.imprint`) cut into its host."""
     from .imprint import footprints, imprint_many, on_lines
 
+    on = on_lines(geometry, vertices)
     seams = np.zeros(len(vertices), bool)
-    seams[list(on_lines(geometry, vertices))] = True
+    seams[list(on)] = True
     by_host = {}
-    for host, loop in footprints(geometry, vertices, triangles, component, components):
+    for host, loop in footprints(geometry, vertices, triangles, component, components, on):
         by_host.setdefault(host, []).append(loop)
     cuts = [cut for host, loops in by_host.items()
             for cut in imprint_many(vertices, triangles, np.isin(component, host), loops,

@@ -357,17 +357,18 @@ def on_lines(geometry, vertices):
     return on
 
 
-def footprints(geometry, vertices, triangles, component, components):
+def footprints(geometry, vertices, triangles, component, components, on=None):
     """Loops to imprint: ``[(host component indices, loop)]`` for every open boundary loop of
     a component made (mostly) of its intersection points with another component.
 
     The intersection lines ``"a/b side"`` of ``geometry`` name the standing component ``a``
     and the host ``b`` (:func:`hosts_of`: the components that carry ``b``'s surface); their
-    mirror images count for the image half.
+    mirror images count for the image half. ``on``: :func:`on_lines` where the caller has it.
     """
     from .assemble import boundary_loops
 
-    on = on_lines(geometry, vertices)
+    if on is None:
+        on = on_lines(geometry, vertices)
     out = []
     for loop in boundary_loops(triangles):
         pairs = [on.get(int(x), set()) for x in loop]
