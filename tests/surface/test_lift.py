@@ -15,7 +15,7 @@ from juncture.analysis.areas import normal_area_distribution
 from juncture.surface.assemble import assemble
 from juncture.surface.lift import ON_BODY, _polar, _thickness, surface_lift
 from juncture.surface.remesh import remesh
-from tests.support import EXAMPLE_DECK
+from tests.support import DATA, EXAMPLE_DECK
 
 
 @pytest.fixture(scope="module")
@@ -214,3 +214,38 @@ def test_seams_within_one_body_are_lifted_alike(transport):
     crossing = seam & (names[:, 0] != names[:, 1])
     assert within_body.sum() > 50 and agree[within_body].all()
     assert crossing.sum() > 100 and not agree[crossing].any()
+
+
+def test_a_wing_panel_cut_by_a_footprint_is_lifted_onto_its_sections():
+    """A generated airplane (tests/data/generated/README.md) whose wing runs over the
+    fuselage's roof and carries a fin: its assembled upper and lower surfaces cross (flat
+    triangles from the fin's footprint to the root line cut the section's curvature), and
+    the root line's points at the fuselage's stations lie on the body, off the wing's PCHIP
+    sections, so no triangle there had every corner on them. A corner on a seam with
+    another component now counts, and the new points go onto the model's sections.
+    Oracle: the model's sections at each point's station and chord fraction, and the
+    exact-predicate check."""
+    from juncture.surface.check import check_mesh
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(DATA / "generated" / "remesh"
+                                  / "wing_panel_cut_by_a_fin_footprint.inp"))
+    assembled = assemble(geo)
+    assert check_mesh(assembled.vertices, assembled.triangles).intersecting_pairs > 0
+    lifted = remesh(assembled, lift=surface_lift(geo, assembled))
+    report = check_mesh(lifted.vertices, lifted.triangles)
+    assert report.ok, report.failures()
+    wing = geo.configuration.components["wing"]
+    new = _owners(lifted, "wing")
+    new = new[new >= len(assembled.vertices)]
+    p = lifted.vertices[new].copy()
+    p[:, 1] = np.abs(p[:, 1])
+    up, low, inside = _thickness(wing, p)
+    size = np.ptp(lifted.vertices, axis=0).max()
+    t = wing.thickness_axis
+    on = inside & (np.minimum(np.abs(p[:, t] - up), np.abs(p[:, t] - low)) <= 1e-9 * size)
+    # Between the fuselage and the fin, clear of the root line (where new points are lifted
+    # only part of the way, remesh.TAPER) and of the tip cap.
+    panel = (p[:, 1] > 10.0) & (p[:, 1] < 34.0)
+    assert panel.sum() > 500 and on[panel].mean() > 0.85

@@ -12,9 +12,11 @@ points are never moved (they are made on the seam's straight edges, shared by bo
 
 A wing's networks join its ordinates by straight lines, where the model's sections are
 PCHIP curves through them (chordwise ``"pchip"``, the default): :func:`surface_lift` also
-moves a new point on a wing-like component's own triangle (every corner on the model's
-upper, or every corner on its lower, surface) along the thickness axis onto that surface at
-the same span station and chord fraction.
+moves a new point on a wing-like component's own triangle (one of its own upper or lower
+networks, or, in a block shared with a body, every corner on the model's upper or every
+corner on its lower surface) along the thickness axis onto that surface at the same span
+station and chord fraction, the lofting lines extended beyond the end sections where a root
+crossing or outside the fuselage meets it there (TM-4406 eq 4).
 """
 
 from __future__ import annotations
@@ -105,10 +107,23 @@ def _polar(body, points, image):
     return rho, radius, centre, d / np.where(rho > 0, rho, 1.0)[:, None]
 
 
+def _shared(mesh):
+    """(n_vertices,) bool: vertices of triangles of more than one component (the seams
+    between components: intersection and fillet-start lines)."""
+    n = len(mesh.vertices)
+    comp = np.repeat(np.asarray(mesh.component), 3)
+    ids = np.asarray(mesh.triangles).ravel()
+    lo, hi = np.full(n, np.iinfo(np.int64).max), np.full(n, -1)
+    np.minimum.at(lo, ids, comp)
+    np.maximum.at(hi, ids, comp)
+    return (hi >= 0) & (lo != hi)
+
+
 def _lifter(geometry, mesh, kind, move):
     """``lift(points, corners, component, surface)`` calling ``move(model, points, corners
-    (k, 3, 3), image, tol)`` (which returns the points and their sizes) for points on
-    components of type ``kind`` (caps excluded), or None when the geometry has none.
+    (k, 3, 3), seam (k, 3), image, tol)`` (which returns the points and their sizes) for
+    points on components of type ``kind`` (caps excluded), or None when the geometry has
+    none. ``seam``: the corners that other components' triangles share (:func:`_shared`).
 
     ``lift.both(points, corners, component, surface)``: (the lifted points, per point the
     size of the exact surface it is lifted onto: a body's radius, a wing section's largest
@@ -120,6 +135,7 @@ def _lifter(geometry, mesh, kind, move):
         return None
     vertices = np.asarray(mesh.vertices, float)
     tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
+    shared = _shared(mesh)
 
     def both(points, corners, component, surface, sized=True):
         name = mesh.surfaces[int(surface)]
@@ -128,8 +144,8 @@ def _lifter(geometry, mesh, kind, move):
         if not len(points) or name.endswith(" cap"):
             return points, size
         for model in models.get(int(component), ()):
-            points, got = move(model, points, vertices[corners], name.endswith(" image"), tol,
-                               sized)
+            points, got = move(model, points, vertices[corners], shared[corners],
+                               name.endswith(" image"), tol, sized)
             size = np.minimum(size, got)
         return points, size
 
@@ -153,7 +169,7 @@ def body_lift(geometry, mesh):
     return _lifter(geometry, mesh, CircularBody, _onto_circle)
 
 
-def _onto_circle(body, points, corners, image, tol, sized=True):
+def _onto_circle(body, points, corners, seam, image, tol, sized=True):
     rho, radius, _, _ = _polar(body, corners.reshape(-1, 3), image)
     on = (np.abs(rho - radius) <= tol).reshape(-1, 3).all(axis=1)
     rho, radius, centre, unit = _polar(body, points, image)
@@ -191,19 +207,28 @@ def wing_lift(geometry, mesh):
     return _lifter(geometry, mesh, WingLike, _onto_sections)
 
 
-def _onto_sections(wing, points, corners, image, tol, sized=True):
+def _onto_sections(wing, points, corners, seam, image, tol, sized=True):
+    """Points moved along the thickness axis onto the side of the wing their flat triangle
+    lies on: each corner on that side within ``tol`` or on a ``seam`` with another component
+    (the root line's points at the fuselage's stations lie on the body, off the wing's PCHIP
+    sections), at least one on it. A fillet's triangles have corners off both."""
     flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
     t = wing.thickness_axis
     corners = corners * flip
     c = corners.reshape(-1, 3)
     up, low, inside = _thickness(wing, c)
     facing = np.abs(_normals(corners)[:, t]) > WING_FACING
-    on_up = (inside & (np.abs(c[:, t] - up) <= tol)).reshape(-1, 3).all(axis=1) & facing
-    on_low = (inside & (np.abs(c[:, t] - low) <= tol)).reshape(-1, 3).all(axis=1) & facing
+    on_up = (inside & (np.abs(c[:, t] - up) <= tol)).reshape(-1, 3)
+    on_low = (inside & (np.abs(c[:, t] - low) <= tol)).reshape(-1, 3)
+    n_up, n_low = on_up.sum(axis=1), on_low.sum(axis=1)
+    on_up = (on_up | seam).all(axis=1) & (n_up > 0) & facing
+    on_low = (on_low | seam).all(axis=1) & (n_low > 0) & facing
     p = points * flip
     up, low, inside = _thickness(wing, p)
     out = p.copy()
-    up_only, low_only = on_up & ~on_low & inside, on_low & ~on_up & inside
+    # A leading or trailing edge's corner lies on both sides: the side with more corners.
+    up_only = on_up & (~on_low | (n_up > n_low)) & inside
+    low_only = on_low & (~on_up | (n_low > n_up)) & inside
     out[:, t] = np.where(up_only, up, out[:, t])
     out[:, t] = np.where(low_only, low, out[:, t])
     moved = up_only | low_only
