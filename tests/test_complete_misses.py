@@ -303,3 +303,35 @@ def test_a_line_entering_only_through_a_joint_step_is_refused_by_name():
         msg = str(err.value)
         assert "\n" not in msg and msg.startswith("wing: lower lofting line 4 enters body")
         assert any(f"step at x = {v:.6g}" in msg for v in steps), msg
+
+
+def test_a_tail_line_passing_under_the_tail_cone_meets_its_mirror_image():
+    """A generated airplane (tests/data/generated/README.md) whose tail's trailing-edge line,
+    extended inboard of its root, passes under the narrowing tail cone: continued to the
+    plane of symmetry as the wing's lines are (juncture.misses), the tail's networks end
+    there on the line through the deck's root and tip trailing edges (straight: TM-4406
+    eq 4), below the body; both sides end at that one point, and the log says so. In the
+    four-block layout (no fuselage blocks bounded by the tail) the input root point is kept."""
+    from tests.support import DATA
+
+    cfg = jc.read(DATA / "generated" / "assembly" / "tail_trailing_edge_under_the_tail_cone.inp")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(cfg)
+        four = jc.complete(cfg, blocks=4)
+    tail, body = cfg["tail 1"], cfg["body"]
+    te = tail.le + np.outer(tail.chord, [1.0, 0.0, 0.0])      # root and tip trailing edges
+    q = te[0] + (0.0 - te[0, 1]) / (te[1, 1] - te[0, 1]) * (te[1] - te[0])
+    length = float(np.ptp(body.x_global))
+    for side in ("upper", "lower"):
+        root = geo.networks[f"tail 1 {side}"][0]
+        end = root[np.argmax(root[:, 0])]
+        assert np.linalg.norm(end - q) <= 1e-12 * length
+        assert np.isnan(geo.intersections[f"tail 1/body {side}"][-1]).all()
+        assert any(f"tail 1/body {side}: lofting line 7 passes under body; continued" in line
+                   for line in geo.log)
+        kept = four.networks[f"tail 1 {side}"][0]
+        assert np.abs(kept[:, 0] - te[0, 0]).min() == 0.0    # the input root point
+    up, lo = geo.networks["tail 1 upper"][0], geo.networks["tail 1 lower"][0]
+    assert np.array_equal(up[np.argmax(up[:, 0])], lo[np.argmax(lo[:, 0])])
+    assert body.signed_distance(q[None])[0] > 0 and q[2] < body.center_at([q[0]])[0, 1]

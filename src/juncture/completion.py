@@ -216,10 +216,12 @@ def _other_components(cfg, wing, body, opts, log, known=None):
             other = "lower" if pair.role == "upper" else "upper"
             traces += [(pair.role, up.points), (pair.role, lo.points),
                        (other, 0.5 * (up.points + lo.points))]
-        if pair.b == body.name:
-            attached.append((work[pair.a], up, lo))
         inters[up.name], inters[lo.name] = up.points, lo.points
         log.extend(up.log + lo.log)
+        if pair.b == body.name:
+            if _continued(work[pair.a], cfg, opts):
+                up, lo = _ended(work[pair.a], body, up, log), _ended(work[pair.a], body, lo, log)
+            attached.append((work[pair.a], up, lo))
         by_comp.setdefault(pair.a, {"upper": [], "lower": []})
         by_comp[pair.a]["upper"].append(up)
         by_comp[pair.a]["lower"].append(lo)
@@ -254,6 +256,27 @@ def _other_components(cfg, wing, body, opts, log, known=None):
     return nets, inters, attached, traces
 
 
+def _continued(comp, cfg, opts):
+    """Whether ``comp``'s lofting lines that miss the fuselage are continued to the plane of
+    symmetry (:mod:`juncture.misses`, as the main wing's): a canard or tail with a mirror
+    image, in the split layout (whose fuselage blocks end their rows at such a point)."""
+    return (getattr(comp, "span_axis", None) == 1 and comp.mirrored and cfg.symmetric
+            and opts.blocks in (None, "split") and not opts.single_network)
+
+
+def _ended(comp, body, inter, log):
+    """``inter`` with each line that misses ``body`` ending at its point on the plane of
+    symmetry (found there; :func:`juncture.misses.line_ends`)."""
+    from dataclasses import replace
+
+    if np.all(inter.found):
+        return inter
+    ends = line_ends(comp, body, inter)
+    log.extend(ends.log)
+    return replace(inter, points=ends.points, theta=ends.theta, u=ends.u,
+                   found=np.ones(len(ends.points), bool))
+
+
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
     from .surface.body_split import Boundary, boundary_from_points, forward, seam_gap, split_body
@@ -267,10 +290,8 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     fins, port = [], []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
-            ups.append(boundary_from_points(body, up.points[forward(up.points[:, 0])],
-                                            comp.name, _exact(comp, body, "upper", up.points)))
-            los.append(boundary_from_points(body, lo.points[forward(lo.points[:, 0])],
-                                            comp.name, _exact(comp, body, "lower", lo.points)))
+            ups.append(_region_boundary(comp, body, "upper", up))
+            los.append(_region_boundary(comp, body, "lower", lo))
         elif not comp.mirrored:  # a centre-line fin: the upper surface starts at it
             fins.append(boundary_from_points(body, up.points, comp.name,
                                              _exact(comp, body, "upper", up.points)))
@@ -308,6 +329,19 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
                           "points": int(inter.found.sum()),
                           "max_gap": seam_gap(inter.points, nets[net])})
     return nets, seams
+
+
+def _region_boundary(comp, body, side, inter):
+    """The Boundary of the fuselage's block on ``comp``'s ``side`` (a canard or tail): its
+    intersection points with their angles; a line continued to the plane of symmetry ends
+    at its point there, with the angle of the body's top or bottom (:func:`_ended`)."""
+    from .surface.body_split import Boundary, forward
+
+    k = forward(inter.points[:, 0])
+    pts, theta = inter.points[k], inter.theta[k]
+    ok = np.all(np.isfinite(pts), axis=1)
+    return Boundary(pts[ok, 0], theta[ok], comp.name, pts[ok],
+                    _exact(comp, body, side, inter.points))
 
 
 def _exact(comp, body, side, points, mirrored=False):

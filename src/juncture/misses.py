@@ -14,7 +14,10 @@ surface at y = y_c there is no wing-body junction at that chordwise station, the
 (over) the wing is covered by it, and what is exposed is the wing surface itself, all the way
 to its mirror image. A fillet has nothing to round there, so cubic and circular fillet lines of
 such a line are degenerate at Q (no fillet), as at the leading and trailing edges. A surface
-without a mirror image ends open there.
+without a mirror image ends open there. A canard or tail with a mirror image on the fuselage
+follows the same rule in the split layout (a tail's trailing edge passing under a narrowing
+tail cone); elsewhere its line keeps its input root point
+(:mod:`juncture.surface.component_networks`).
 
 TM-4406 ("Special situations") treats one case, a lower line of a low wing passing under the
 body, with a cubic fillet: "the theta = -90 deg location at the appropriate x-station is taken

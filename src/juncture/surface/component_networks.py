@@ -11,7 +11,9 @@
   the pylon).
 
 A lofting line that never meets the other component keeps its input end point, and the log
-says so (a warning, never a silent change).
+says so (a warning, never a silent change). A canard's or tail's line that misses the
+fuselage in the split layout arrives here already continued to the plane of symmetry
+(:mod:`juncture.misses`).
 """
 
 from __future__ import annotations
