@@ -279,14 +279,9 @@ def _ended(comp, body, inter, log):
 
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
-    from .surface.body_split import Boundary, boundary_from_points, forward, seam_gap, split_body
+    from .surface.body_split import boundary_from_points, seam_gap, split_body
 
-    ku, kl = forward(fu.start[:, 0]), forward(fl.start[:, 0])
-    sharp = fu.kind == "none" and fl.kind == "none"   # rows end on the wing itself
-    ups = [Boundary(fu.start[ku, 0], fu.theta_start[ku], "wing", fu.start[ku],
-                    _exact(wing, body, "upper", fu.start) if sharp else None)]
-    los = [Boundary(fl.start[kl, 0], fl.theta_start[kl], "wing", fl.start[kl],
-                    _exact(wing, body, "lower", fl.start) if sharp else None)]
+    ups, los = (list(b) for b in zip(_wing_boundaries(wing, body, fu, fl)))
     fins, port = [], []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
@@ -317,10 +312,13 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
                    "each half")
     six, _ = juncture_networks(wing, body, fu, fl, 6, n_half, stations)
     nets["wing upper"], nets["wing lower"] = six["wing upper"], six["wing lower"]
+    # A line that turns back at the leading edge lies partly on the other block's boundary.
+    turned = ups[0].points.shape != fu.start.shape or los[0].points.shape != fl.start.shape
+    on_u, on_l = (ups[0].points, los[0].points) if turned else (fu.start, fl.start)
     seams = [{"a": "body upper", "b": "wing upper", "seam": "fillet start line",
-              "points": len(fu.start), "max_gap": seam_gap(fu.start, nets["body upper"])},
+              "points": len(fu.start), "max_gap": seam_gap(on_u, nets["body upper"])},
              {"a": "body lower", "b": "wing lower", "seam": "fillet start line",
-              "points": len(fl.start), "max_gap": seam_gap(fl.start, nets["body lower"])}]
+              "points": len(fl.start), "max_gap": seam_gap(on_l, nets["body lower"])}]
     for comp, up, lo in attached:
         for inter, net in ((up, "body upper"), (lo, "body lower")):
             if comp.span_axis == 2 and (net == "body lower" or comp.mirrored):
@@ -329,6 +327,58 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
                           "points": int(inter.found.sum()),
                           "max_gap": seam_gap(inter.points, nets[net])})
     return nets, seams
+
+
+def _wing_boundaries(wing, body, fu, fl):
+    """(upper, lower) Boundary of the fuselage's blocks beside the wing: its upper and lower
+    fillet start lines (the intersection lines without a fillet), each from its leading-edge
+    point aft (:func:`juncture.surface.body_split.forward`); where one line turns back at
+    the leading edge, its forward run is the other block's boundary ahead of that block's own
+    line (:func:`juncture.surface.body_split.footprint_chains`). Without a fillet the rows at
+    body stations between the points end on the wing's exact intersection there."""
+    from .surface.body_split import Boundary, footprint_chains, forward
+
+    sharp = fu.kind == "none" and fl.kind == "none"   # rows end on the wing itself
+    lines, names = (fu, fl), ("upper", "lower")
+    chains = footprint_chains(fu.start, fl.start)
+    if chains is None:
+        chains = [[(s, i) for i in np.flatnonzero(forward(line.start[:, 0]))]
+                  for s, line in enumerate(lines)]
+        exact = [_exact(wing, body, n, line.start) if sharp else None
+                 for n, line in zip(names, lines)]
+    else:
+        exact = [_chain_exact(wing, body, lines, c) if sharp else None for c in chains]
+    out = []
+    for chain, ex in zip(chains, exact):
+        pts = np.array([lines[s].start[i] for s, i in chain]).reshape(-1, 3)
+        theta = np.array([lines[s].theta_start[i] for s, i in chain], float)
+        out.append(Boundary(pts[:, 0], theta, "wing", pts, ex))
+    return out
+
+
+def _chain_exact(wing, body, lines, chain):
+    """``exact(x)`` along a chain of :func:`_wing_boundaries`: on each side's part, that
+    surface's intersection in the planes x between the part's neighbouring points (which may
+    run forward along the line)."""
+    parts = []
+    for s, name in enumerate(("upper", "lower")):
+        idx = [i for side, i in chain if side == s]
+        if len(idx) < 2:
+            continue
+        pts = np.full(lines[s].start.shape, np.nan)
+        pts[idx] = lines[s].start[idx]
+        parts.append((pts[idx, 0].min(), pts[idx, 0].max(),
+                      _exact(wing, body, name, pts, either=True)))
+
+    def exact(x):
+        x = np.asarray(x, float)
+        out = np.full((x.size, 3), np.nan)
+        for lo, hi, part in parts:
+            inside = (x > lo) & (x < hi)
+            if inside.any():
+                out[inside] = part(x[inside])
+        return out
+    return exact
 
 
 def _region_boundary(comp, body, side, inter):
@@ -344,10 +394,11 @@ def _region_boundary(comp, body, side, inter):
                     _exact(comp, body, side, inter.points))
 
 
-def _exact(comp, body, side, points, mirrored=False):
+def _exact(comp, body, side, points, mirrored=False, either=False):
     """``exact(x)`` of a :class:`~juncture.surface.body_split.Boundary`: where ``comp``'s
     ``side`` surface meets ``body`` in the planes x (its intersection ``points`` bracket
-    them; mirrored in y with ``mirrored``)."""
+    them, with ``either`` also where x falls from one point to the next; mirrored in y with
+    ``mirrored``)."""
     from .intersect.stations import plane_points
 
     solved = {}  # the same stations are asked again (both halves beside an unsymmetric
@@ -357,7 +408,7 @@ def _exact(comp, body, side, points, mirrored=False):
         x = np.asarray(x, float)
         key = x.tobytes()
         if key not in solved:
-            pts = plane_points(comp, body, side, points, x)
+            pts = plane_points(comp, body, side, points, x, either)
             solved[key] = mirror_points(pts) if mirrored else pts
         return solved[key].copy()
     return exact

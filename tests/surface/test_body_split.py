@@ -152,3 +152,43 @@ def test_three_blocks_tile_the_section_where_a_region_lies_inside_anothers_range
                        angle(lo_net[:, 0]), angle(lo_net[:, -1]))
     assert np.allclose(lo_ends[in_wing], np.interp(xl[in_wing], wing[1].x, wing[1].theta),
                        atol=1e-12)
+
+
+def test_a_line_turning_back_at_the_leading_edge_bounds_the_other_block_there():
+    """The upper line runs forward from the leading-edge point before it turns aft (a high
+    swept wing's intersection bulging forward and up): at the stations of that forward run
+    the region lies between two of its points, so the run, taken aft, bounds the lower
+    block up to the leading-edge point and the lower line goes on from there; the upper
+    block follows the upper line from its foremost point. Both chains run aft."""
+    from juncture.surface.body_split import footprint_chains
+
+    le = [10.0, 3.0, 0.0]
+    upper = np.array([le, [9.0, 2.5, 1.0], [8.5, 1.5, 2.0], [12.0, 0.5, 2.5], [20.0, 0.5, 2.0]])
+    lower = np.array([le, [12.0, 3.0, -1.0], [15.0, 3.0, -1.2], [18.0, 2.5, -1.0],
+                      [20.0, 0.5, 2.0]])
+    up_chain, low_chain = footprint_chains(upper, lower)
+    assert up_chain == [(0, 2), (0, 3), (0, 4)]
+    assert low_chain == [(0, 2), (0, 1), (0, 0), (1, 1), (1, 2), (1, 3), (1, 4)]
+    for chain in (up_chain, low_chain):
+        x = [(upper, lower)[s][i, 0] for s, i in chain]
+        assert np.all(np.diff(x) > 0)
+    # The same turned the other way up: the chains swap roles.
+    flipped = footprint_chains(lower * [1, 1, -1], upper * [1, 1, -1])
+    assert flipped == ([(1, i) for i in (2, 1, 0)] + [(0, i) for i in (1, 2, 3, 4)],
+                       [(1, 2), (1, 3), (1, 4)])
+
+
+def test_lines_that_run_aft_or_both_turn_back_have_no_chains():
+    """Lines that run aft from the leading edge keep the blocks as they were
+    (body_split.forward); two lines that both turn back, or a chain that would not run aft,
+    are left to it too."""
+    from juncture.surface.body_split import footprint_chains
+
+    le = [10.0, 3.0, 0.0]
+    aft = np.array([le, [12.0, 2.5, 1.0], [15.0, 2.0, 1.5]])
+    back = np.array([le, [9.0, 2.5, 1.0], [15.0, 2.0, 1.5]])
+    assert footprint_chains(aft, aft * [1, 1, -1]) is None
+    assert footprint_chains(back, back * [1, 1, -1]) is None
+    # The upper line turns back, the lower one wiggles: no chain runs aft.
+    wiggle = np.array([le, [12.0, 3.0, -1.0], [11.0, 3.0, -1.2], [15.0, 2.0, -1.5]])
+    assert footprint_chains(back, wiggle) is None

@@ -31,11 +31,12 @@ MARGIN = 1e-9
 MAX_ITER = 40
 
 
-def plane_points(wing, body, side, points, x):
+def plane_points(wing, body, side, points, x, either=False):
     """(len(x), 3) intersection points of ``wing``'s ``side`` surface with ``body`` in the
     planes x = ``x``, NaN where a station does not lie strictly between the points of two
     neighbouring lofting lines that both meet the body, x increasing from the first to the
-    second, or where the search fails (a trial line that misses the body).
+    second (with ``either``, or falling: the caller leaves one such pair per station), or
+    where the search fails (a trial line that misses the body).
 
     Parameters
     ----------
@@ -61,16 +62,21 @@ def plane_points(wing, body, side, points, x):
     ok[ok] = np.abs(_error_function(body)(p[ok])) <= ON_BODY * size
     a = np.flatnonzero(ok[:-1] & ok[1:])          # neighbouring lines, both on the body
     b = a + 1
+    f = wing.x_over_c / 100.0
+    fa, fb = f[a], f[b]
     xa, xb = p[a, 0], p[b, 0]
+    if either:                    # each pair from its foremost point to its aftmost
+        swap = xa > xb
+        xa, xb = np.where(swap, xb, xa), np.where(swap, xa, xb)
+        fa, fb = np.where(swap, fb, fa), np.where(swap, fa, fb)
     pad = MARGIN * size
     inside = (xa[None, :] + pad < x[:, None]) & (x[:, None] < xb[None, :] - pad)
     rows = np.flatnonzero(inside.any(axis=1))
     if not rows.size:
         return out
     j = np.argmax(inside[rows], axis=1)
-    f = wing.x_over_c / 100.0
     x0 = x[rows]
-    solved = _false_position(wing, body, side, x0, f[a[j]], f[b[j]], xa[j] - x0, xb[j] - x0,
+    solved = _false_position(wing, body, side, x0, fa[j], fb[j], xa[j] - x0, xb[j] - x0,
                              XTOL * size)
     out[rows] = solved
     return out

@@ -21,8 +21,8 @@ import numpy as np
 from .networks import body_range, orient, radial_outward
 from .overlap_blocks import find_overlap, middle_block, outside_regions, switch_points
 
-__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "forward", "split_body",
-           "seam_gap", "polyline_gap"]
+__all__ = ["Boundary", "bounding_curve", "boundary_from_points", "footprint_chains", "forward",
+           "split_body", "seam_gap", "polyline_gap"]
 
 
 class Boundary:
@@ -84,7 +84,8 @@ def forward(x):
     kept point's. The network rows are at constant x, so a block's boundary cannot follow
     a line back in x (a wing root's second point ahead of its leading-edge point): such a
     point stays on the wing's root line only, and the small loop it leaves between the
-    wing and the fuselage is capped. NaN is never kept."""
+    wing and the fuselage is capped (where only one line turns back, at the leading edge,
+    :func:`footprint_chains` does better). NaN is never kept."""
     x = np.asarray(x, float)
     keep = np.zeros(x.size, bool)
     top = -np.inf
@@ -92,6 +93,49 @@ def forward(x):
         if np.isfinite(xi) and xi > top:
             keep[i], top = True, xi
     return keep
+
+
+def _turns_back(x):
+    """k > 0 where a line's points 0..k run forward (x falling) to its foremost point k and
+    the rest aft; 0 where it runs aft from its first point; None otherwise (or NaN)."""
+    if x.size < 2 or not np.all(np.isfinite(x)):
+        return None
+    k = int(np.argmin(x))
+    if np.all(np.diff(x[:k + 1]) < 0.0) and np.all(np.diff(x[k:]) > 0.0):
+        return k
+    return None
+
+
+def footprint_chains(upper, lower):
+    """(upper chain, lower chain) of a region's two lines (each (n, 3), leading edge first)
+    where one of them turns back at the leading edge, else None. Each chain is a list of
+    (side, index) pairs (side 0: ``upper``, 1: ``lower``) running aft.
+
+    Rows are at constant x, so a block's boundary must run aft (:func:`forward`). A line can
+    run forward from the leading-edge point before it turns aft: the upper intersection of a
+    high, swept wing on a large fuselage bulges forward and up, and a line continued to the
+    plane of symmetry lies ahead of it. At those stations the region lies between two points
+    of that one line (theta_b is the footprint's lower and upper crossing at each station):
+    its forward run, taken aft, is the other block's boundary up to the leading-edge point,
+    and that block's own line goes on from there. None also where both lines turn back or
+    the other chain would not run aft.
+    """
+    upper, lower = np.asarray(upper, float), np.asarray(lower, float)
+    ku, kl = _turns_back(upper[:, 0]), _turns_back(lower[:, 0])
+    if ku is None or kl is None or (ku > 0) == (kl > 0):
+        return None
+    first, other, k = (0, 1, ku) if ku else (1, 0, kl)
+    line = (upper, lower)[first]
+    turned = [(first, i) for i in range(k, -1, -1)]
+    rest = [(other, i) for i in range(len((upper, lower)[other]))]
+    if np.array_equal(line[0], (upper, lower)[other][0]):
+        rest = rest[1:]                       # the leading-edge point once
+    own = [(first, i) for i in range(k, len(line))]
+    across = turned + rest
+    x = np.array([(upper, lower)[s][i, 0] for s, i in across])
+    if not np.all(np.diff(x) > 0.0):
+        return None
+    return (own, across) if first == 0 else (across, own)
 
 
 def bounding_curve(x, regions, x_nose, x_end, side=0.0):
