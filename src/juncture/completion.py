@@ -593,7 +593,12 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     intersections = {f"{wing.name}/{body.name} upper": iu.points,
                      f"{wing.name}/{body.name} lower": lower_points}
     intersections.update(other_inters)
-    refuse_crossing_regions(completed, intersections)
+    junctions = dict(intersections)
+    if fillet is not None:  # the wing covers the body up to its fillet's start lines
+        junctions = {k: v for k, v in junctions.items() if not k.startswith(f"{wing.name}/")}
+        junctions[f"{wing.name} fillet/{body.name} upper"] = fu.start
+        junctions[f"{wing.name} fillet/{body.name} lower"] = fl.start
+    refuse_crossing_regions(completed, junctions)
     for k, (net, plane) in other_nets.items():
         nets[k] = net
         if plane is not None:

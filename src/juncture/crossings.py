@@ -2,7 +2,9 @@
 
 Each wing-like component that meets a body covers a region of its surface: the band between
 its two intersection lines (upper and lower, or outboard and inboard for a fin), from the
-leading edge's point to the trailing edge's. juncture trims each component at its own lines
+leading edge's point to the trailing edge's; with a fillet, the wing's band runs between the
+fillet's start lines (``complete`` passes them as ``"<wing> fillet/<body> upper"`` and
+``lower``). juncture trims each component at its own lines
 and cuts each region out of the body (the fuselage blocks of TM-4607, or a footprint cut
 into the body's triangles). Where two regions overlap on the body (a fin standing where the
 thick root of the wing already meets the fuselage), one component runs through the other

@@ -277,18 +277,40 @@ def test_curvature_and_depth_bring_the_transport_within_half_a_percent():
     assert abs(sized.volume() / cells - 1.0) < abs(default.volume() / cells - 1.0)
 
 
-def test_regions_at_one_height_over_the_same_stations_are_refused_by_name():
+def test_a_canard_inside_the_fillets_region_is_refused_by_name():
     """A canard whose root (x 18.1 to 21.0) runs beside the wing's leading edge (18.4) at
     its height, inside the cubic fillet's region (tests/data/generated/refused; seed 9696,
-    draw 6): the split fuselage has no layout for the body between them, so mesh refuses in
-    one line naming both, the stations and which to move, before what it leads to."""
+    draw 6): complete refuses in one line naming both, the stations and which to move
+    (the wing covers the body up to its fillet's start lines). Oracle: the canard's
+    intersection points at the fillet's stations lie round the body between the fillet's
+    two start lines (completed without the canard), each line's angle interpolated in x.
+    Without a fillet the two junctions are clear of each other and it completes."""
+    from juncture.intersect import intersect_body_both
+
     deck = DATA / "generated" / "refused" / "canard_at_the_wing_height_by_its_fillet.inp"
+    cfg = jc.read(deck)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", jc.JunctureWarning)
-        geo = jc.complete(jc.read(deck), fillet="cubic", keep_area=True)
-    with pytest.raises(jc.GeometryError) as err:
-        jc.mesh(geo)
+        with pytest.raises(jc.GeometryError) as err:
+            jc.complete(cfg, fillet="cubic", keep_area=True)
+        jc.complete(cfg)
+        alone = cfg.replace(components={k: v for k, v in cfg.components.items()
+                                        if k != "canard 1"})
+        fillet = jc.complete(alone, fillet="cubic", keep_area=True).fillets
     msg = str(err.value)
     assert "\n" not in msg
-    assert "canard 1 and wing meet body over the same stations" in msg
-    assert "move canard 1 clear of the other in x" in msg
+    assert msg.startswith("canard 1: its junction with body")
+    assert "overlaps that of wing fillet" in msg and "move canard 1 clear of" in msg
+    body = cfg["body"]
+
+    def angle(p):
+        c = body.center_at(p[:, 0])
+        return np.arctan2(p[:, 2] - c[:, 1], p[:, 1] - c[:, 0])
+    starts = [fillet[f"fillet {side}"][:, 0] for side in ("upper", "lower")]
+    canard = np.concatenate([i.points for i in intersect_body_both(cfg["canard 1"], body)])
+    canard = canard[np.all(np.isfinite(canard), axis=1)]
+    lo, hi = max(s[:, 0].min() for s in starts), min(s[:, 0].max() for s in starts)
+    at = canard[(canard[:, 0] > lo) & (canard[:, 0] < hi)]
+    up, low = (np.interp(at[:, 0], *zip(*sorted(zip(s[:, 0], angle(s))))) for s in starts)
+    between = (angle(at) < np.maximum(up, low)) & (angle(at) > np.minimum(up, low))
+    assert len(at) and between.any()
