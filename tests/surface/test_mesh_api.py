@@ -314,3 +314,26 @@ def test_a_canard_inside_the_fillets_region_is_refused_by_name():
     up, low = (np.interp(at[:, 0], *zip(*sorted(zip(s[:, 0], angle(s))))) for s in starts)
     between = (angle(at) < np.maximum(up, low)) & (angle(at) > np.minimum(up, low))
     assert len(at) and between.any()
+
+
+def test_a_fin_root_overhanging_the_fuselage_is_refused_naming_its_lines():
+    """A generated twin fin (tests/data/generated/refused; seed 9696, draw 15) whose root
+    runs aft off a narrowing tail cone: lofting lines 7 to 9 never meet the fuselage, keep
+    their input root points, and the cap closing the root crosses the fuselage. mesh
+    refuses in one line that names the fin, the lines and what to change, before what it
+    leads to. Oracle: those lines' input root points lie outside the fuselage on both
+    sides (its own signed distance), the first four inside it: the root crosses it."""
+    deck = DATA / "generated" / "refused" / "fin_root_overhanging_the_tail_cone.inp"
+    cfg = jc.read(deck)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(cfg)
+    with pytest.raises(jc.GeometryError) as err:
+        jc.mesh(geo, min_angle=0)
+    msg = str(err.value)
+    assert "\n" not in msg
+    assert "fin 2: lofting lines 7, 8, 9 never meet body" in msg
+    assert "move fin 2 so that its root section lies on or inside body" in msg
+    for side in ("upper", "lower"):
+        outside = cfg["body"].signed_distance(cfg["fin 2"].lofting_lines(side)[:, 0]) > 0
+        assert outside[6:].all() and not outside[:4].any()

@@ -8,6 +8,8 @@ terms where it is known: :func:`overlapping_regions`), and re-triangulates it
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from .assemble import assemble
@@ -112,7 +114,8 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     report = None
     if check:
         report = check_mesh(surface.vertices, surface.triangles)
-        _refuse(geometry, surface, report.failures() + _crossing_surfaces(surface, report))
+        _refuse(geometry, surface, _kept_roots(geometry, surface, report) + report.failures()
+                + _crossing_surfaces(surface, report))
     if failures:
         _not_kept(failures, stacklevel=4)
     return surface, report
@@ -144,6 +147,34 @@ def _crossing_surfaces(surface, report, most=3):
             for (a, b), n, p in zip(groups[order], count[order], where)]
     more = f" and {len(groups) - most} more" if len(groups) > most else ""
     return ["surfaces that cross: " + "; ".join(said) + more]
+
+
+#: The log line of a lofting line that keeps its input root point
+#: (juncture.surface.component_networks).
+_KEPT = re.compile(r"(.+?)/(.+?) (?:outboard|inboard|upper|lower)\b.*?: lofting line (\d+) "
+                   r"never meets the other components?; its input root point is kept")
+
+
+def _kept_roots(geometry, surface, report):
+    """[one line per component whose root keeps input points, off what it stands on, and
+    whose surfaces cross something] (the cause of those crossings, first), or []."""
+    if report.pairs is None or not len(report.pairs):
+        return []
+    kept = {}
+    for line in getattr(geometry, "log", ()):
+        got = _KEPT.match(line)
+        if got:
+            kept.setdefault((got[1], got[2]), set()).add(int(got[3]))
+    names = set(np.asarray(surface.surfaces)[surface.surface[report.pairs.ravel()]].tolist())
+    out = []
+    for (a, b), lines in kept.items():
+        if any(n.startswith(f"{a} ") for n in names):
+            out.append(f"{a}: lofting lines {', '.join(map(str, sorted(lines)))} never meet "
+                       f"{b}, so its root keeps its input points there, off {b}, and the "
+                       f"surface closing it crosses {b}; juncture does not yet close a root "
+                       f"partly off what it stands on: move {a} so that its root section "
+                       f"lies on or inside {b}")
+    return out
 
 
 def _refuse(geometry, surface, failures):
