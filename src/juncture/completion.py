@@ -333,8 +333,8 @@ def _wing_boundaries(wing, body, fu, fl):
     """(upper, lower) Boundary of the fuselage's blocks beside the wing: its upper and lower
     fillet start lines (the intersection lines without a fillet), each from its leading-edge
     point aft (:func:`juncture.surface.body_split.forward`); where one line turns back at
-    the leading edge, its forward run is the other block's boundary ahead of that block's own
-    line (:func:`juncture.surface.body_split.footprint_chains`). Without a fillet the rows at
+    an end, that run is the other block's boundary ahead of (after) that block's own line
+    (:func:`juncture.surface.body_split.footprint_chains`). Without a fillet the rows at
     body stations between the points end on the wing's exact intersection there."""
     from .surface.body_split import Boundary, footprint_chains, forward
 
@@ -357,18 +357,24 @@ def _wing_boundaries(wing, body, fu, fl):
 
 
 def _chain_exact(wing, body, lines, chain):
-    """``exact(x)`` along a chain of :func:`_wing_boundaries`: on each side's part, that
-    surface's intersection in the planes x between the part's neighbouring points (which may
+    """``exact(x)`` along a chain of :func:`_wing_boundaries`: on each piece of one side's
+    neighbouring points, that surface's intersection in the planes x between them (they may
     run forward along the line)."""
+    runs = [[chain[0]]]   # pieces of one side's neighbouring points
+    for prev, cur in zip(chain[:-1], chain[1:]):
+        if cur[0] == prev[0] and abs(cur[1] - prev[1]) == 1:
+            runs[-1].append(cur)
+        else:
+            runs.append([cur])
     parts = []
-    for s, name in enumerate(("upper", "lower")):
-        idx = [i for side, i in chain if side == s]
-        if len(idx) < 2:
+    for run in runs:
+        if len(run) < 2:
             continue
+        s, idx = run[0][0], [i for _, i in run]
         pts = np.full(lines[s].start.shape, np.nan)
         pts[idx] = lines[s].start[idx]
         parts.append((pts[idx, 0].min(), pts[idx, 0].max(),
-                      _exact(wing, body, name, pts, either=True)))
+                      _exact(wing, body, ("upper", "lower")[s], pts, either=True)))
 
     def exact(x):
         x = np.asarray(x, float)

@@ -192,3 +192,18 @@ def test_lines_that_run_aft_or_both_turn_back_have_no_chains():
     # The upper line turns back, the lower one wiggles: no chain runs aft.
     wiggle = np.array([le, [12.0, 3.0, -1.0], [11.0, 3.0, -1.2], [15.0, 2.0, -1.5]])
     assert footprint_chains(back, wiggle) is None
+
+
+def test_a_line_running_aft_of_the_trailing_edge_bounds_the_other_block_after_it():
+    """The lower line runs aft of the trailing-edge point before it comes back to it (a line
+    continued to the plane of symmetry behind the trailing edge): at those stations the
+    region lies between two of its points, so that run, taken aft, bounds the upper block
+    after the shared trailing edge. Both chains run aft."""
+    from juncture.surface.body_split import footprint_chains
+
+    te = [20.0, 0.5, 2.0]
+    upper = np.array([[10.0, 3.0, 0.0], [12.0, 2.5, 1.0], [16.0, 1.5, 2.0], te])
+    lower = np.array([[10.0, 3.0, 0.0], [13.0, 2.5, -1.0], [22.0, 0.0, -1.0], te])
+    up_chain, low_chain = footprint_chains(upper, lower)
+    assert up_chain == [(0, 0), (0, 1), (0, 2), (0, 3), (1, 2)]
+    assert low_chain == [(1, 0), (1, 1), (1, 2)]

@@ -95,47 +95,63 @@ def forward(x):
     return keep
 
 
-def _turns_back(x):
-    """k > 0 where a line's points 0..k run forward (x falling) to its foremost point k and
-    the rest aft; 0 where it runs aft from its first point; None otherwise (or NaN)."""
+def _runs(x):
+    """(ks, ke) of a line whose points 0..ks run forward (x falling) to its foremost point,
+    ks..ke aft and ke..end forward again (ks = 0, ke = last where it only runs aft), or
+    None (a wiggle, NaN)."""
     if x.size < 2 or not np.all(np.isfinite(x)):
         return None
-    k = int(np.argmin(x))
-    if np.all(np.diff(x[:k + 1]) < 0.0) and np.all(np.diff(x[k:]) > 0.0):
-        return k
+    ks, ke = int(np.argmin(x)), int(np.argmax(x))
+    if ks >= ke:
+        return None
+    d = np.diff(x)
+    if np.all(d[:ks] < 0.0) and np.all(d[ks:ke] > 0.0) and np.all(d[ke:] < 0.0):
+        return ks, ke
     return None
 
 
 def footprint_chains(upper, lower):
     """(upper chain, lower chain) of a region's two lines (each (n, 3), leading edge first)
-    where one of them turns back at the leading edge, else None. Each chain is a list of
-    (side, index) pairs (side 0: ``upper``, 1: ``lower``) running aft.
+    where one of them turns back at an end, else None. Each chain is a list of (side,
+    index) pairs (side 0: ``upper``, 1: ``lower``) running aft.
 
     Rows are at constant x, so a block's boundary must run aft (:func:`forward`). A line can
-    run forward from the leading-edge point before it turns aft: the upper intersection of a
-    high, swept wing on a large fuselage bulges forward and up, and a line continued to the
-    plane of symmetry lies ahead of it. At those stations the region lies between two points
-    of that one line (theta_b is the footprint's lower and upper crossing at each station):
-    its forward run, taken aft, is the other block's boundary up to the leading-edge point,
-    and that block's own line goes on from there. None also where both lines turn back or
-    the other chain would not run aft.
+    run forward from the leading-edge point before it turns aft (the upper intersection of
+    a high, swept wing on a large fuselage bulges forward and up; a line continued to the
+    plane of symmetry lies ahead of it), or run aft of the trailing-edge point before it
+    comes back to it. At those stations the region lies between two points of that one line
+    (theta_b is the footprint's lower and upper crossing at each station): that run, taken
+    aft, is the other block's boundary ahead of (after) that block's own line. None also
+    where both lines turn back at the same end or a chain would not run aft.
     """
-    upper, lower = np.asarray(upper, float), np.asarray(lower, float)
-    ku, kl = _turns_back(upper[:, 0]), _turns_back(lower[:, 0])
-    if ku is None or kl is None or (ku > 0) == (kl > 0):
+    lines = (np.asarray(upper, float), np.asarray(lower, float))
+    runs = [_runs(line[:, 0]) for line in lines]
+    if runs[0] is None or runs[1] is None:
         return None
-    first, other, k = (0, 1, ku) if ku else (1, 0, kl)
-    line = (upper, lower)[first]
-    turned = [(first, i) for i in range(k, -1, -1)]
-    rest = [(other, i) for i in range(len((upper, lower)[other]))]
-    if np.array_equal(line[0], (upper, lower)[other][0]):
-        rest = rest[1:]                       # the leading-edge point once
-    own = [(first, i) for i in range(k, len(line))]
-    across = turned + rest
-    x = np.array([(upper, lower)[s][i, 0] for s, i in across])
-    if not np.all(np.diff(x) > 0.0):
+    last = [len(line) - 1 for line in lines]
+    ahead = [r[0] > 0 for r in runs]
+    behind = [r[1] < n for r, n in zip(runs, last)]
+    if not (any(ahead) or any(behind)) or all(ahead) or all(behind):
         return None
-    return (own, across) if first == 0 else (across, own)
+    chains = []
+    for s in (0, 1):
+        o = 1 - s
+        ks, ke = runs[s]
+        chain = [(s, i) for i in range(ks, ke + 1)]
+        if ahead[o]:   # the other line's forward run, aft to the shared leading edge
+            if np.array_equal(lines[o][0], lines[s][0]):
+                chain = chain[1:]
+            chain = [(o, i) for i in range(runs[o][0], -1, -1)] + chain
+        if behind[o]:  # from the shared trailing edge, the other line's aft run taken aft
+            run = [(o, i) for i in range(last[o], runs[o][1] - 1, -1)]
+            if np.array_equal(lines[o][-1], lines[s][-1]):
+                run = run[1:]
+            chain = chain + run
+        x = np.array([lines[t][i, 0] for t, i in chain])
+        if not np.all(np.diff(x) > 0.0):
+            return None
+        chains.append(chain)
+    return tuple(chains)
 
 
 def bounding_curve(x, regions, x_nose, x_end, side=0.0):
