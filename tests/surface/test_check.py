@@ -425,3 +425,19 @@ def test_the_integer_stage_takes_rows_in_blocks_with_the_same_signs(monkeypatch)
     assert np.array_equal(pred._exact2(a[:, :2], b[:, :2], c[:, :2]),
                           [oracle([*p, 0.0], [*q, 0.0], [0.0, 0.0, 1.0], [*r, 0.0])
                            for p, q, r in zip(a[:, :2], b[:, :2], c[:, :2])])
+
+
+def test_candidate_pairs_are_tested_in_blocks_with_the_same_result(monkeypatch):
+    """A strip zipped across a wing (held-out seed 1111, draw 13, cubic fillet) gave 40
+    million candidate pairs, and testing them at once ran out of memory. They are tested in
+    blocks of PAIR_BLOCK: the same intersecting pairs (oracle: the whole set at once) for
+    blocks of 5 pairs, on two cubes that overlap and one apart."""
+    import juncture.surface.check as chk
+
+    v, t = joined(cube(), cube(centre=(0.5, 0.3, 0.2)), cube(centre=(3.0, 0.0, 0.0)))
+    whole = chk.self_intersections(v, t)
+    assert len(whole) > 5
+    monkeypatch.setattr(chk, "PAIR_BLOCK", 5)
+    blocks = chk.self_intersections(v, t)
+    assert np.array_equal(np.sort(blocks, axis=0), np.sort(whole, axis=0))
+    assert {tuple(p) for p in blocks.tolist()} == {tuple(p) for p in whole.tolist()}

@@ -94,5 +94,8 @@ def test_a_blunt_trailing_edge_is_zipped_and_the_wing_beside_it_keeps_good_angle
     name = np.array(surface.surfaces)[surface.surface]
     wing = np.isin(name, ["wing upper", "wing lower", "wing upper image", "wing lower image"])
     assert smallest[wing].min() >= 5.0
-    cap = name == "wing cap"
+    # The strip's own triangles (the tip, capped in its plane since 2026-11-27, left out:
+    # every corner there at the tip's span station).
+    y = np.abs(surface.vertices[surface.triangles][:, :, 1])
+    cap = (name == "wing cap") & (np.ptp(y, axis=1) > 0.0)
     assert np.mean(smallest[cap] >= 0.8 * np.degrees(np.arctan(1.0 / SPACING))) >= 0.9

@@ -346,7 +346,7 @@ def _caps(vertices, triangles, tol):
             continue
         c, _, axes, dist = _plane(pts)
         if dist > tol:
-            strip = strip_cap(vertices, loop)
+            strip = None if _turns_inside_tip(pts) else strip_cap(vertices, loop)
             if strip is None:
                 strip = _tip_and_strip(vertices, loop, tol)
             if strip is None:
@@ -387,6 +387,18 @@ def _equal_run(p):
                 best = ((j - run) % k, run + 1)
             run = 0
     return best
+
+
+def _turns_inside_tip(p):
+    """Whether a loop's sharpest turn back lies inside a run of points that share a span
+    station (a tip's leading edge): taken for one strip from there, a blunt trailing edge
+    running into the tip was zipped from the tip's trailing edge to the root."""
+    found, corners = _equal_run(p), _corners(p)
+    if found is None or corners is None:
+        return False
+    start, n = found
+    inner = (np.asarray(corners) - start) % len(p)
+    return bool(np.any((inner > 0) & (inner < n - 1)))
 
 
 def _tip_and_strip(vertices, loop, tol):

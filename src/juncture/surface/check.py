@@ -206,10 +206,23 @@ def _children(i, j):
     return ci, cj
 
 
+#: Candidate pairs tested at once (a surface with long triangles across others, a strip
+#: zipped across a wing, gave 40 million: MemoryError under a 6 GB limit).
+PAIR_BLOCK = 1 << 20
+
+
 def self_intersections(vertices, triangles):
     """(k, 2) triangle pairs that intersect (exact predicates; see the module)."""
     v, tri = np.asarray(vertices, float), np.asarray(triangles, np.int64)
     pairs = _candidate_pairs(v, tri)
+    if len(pairs) <= PAIR_BLOCK:
+        return _intersecting(v, tri, pairs)
+    return np.concatenate([_intersecting(v, tri, pairs[i:i + PAIR_BLOCK])
+                           for i in range(0, len(pairs), PAIR_BLOCK)])
+
+
+def _intersecting(v, tri, pairs):
+    """The candidate ``pairs`` whose triangles intersect."""
     if not len(pairs):
         return pairs
     ta, tb = tri[pairs[:, 0]], tri[pairs[:, 1]]
