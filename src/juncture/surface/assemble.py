@@ -346,9 +346,11 @@ def _caps(vertices, triangles, tol):
             continue
         c, _, axes, dist = _plane(pts)
         if dist > tol:
-            strip = None if _turns_inside_tip(pts) else strip_cap(vertices, loop)
+            ways = (_tip_and_strip, _strip_cap) if _turns_inside_tip(pts) else \
+                (_strip_cap, _tip_and_strip)
+            strip = ways[0](vertices, loop, tol)
             if strip is None:
-                strip = _tip_and_strip(vertices, loop, tol)
+                strip = ways[1](vertices, loop, tol)
             if strip is None:
                 open_.append(loop)
             else:
@@ -387,6 +389,10 @@ def _equal_run(p):
                 best = ((j - run) % k, run + 1)
             run = 0
     return best
+
+
+def _strip_cap(vertices, loop, tol):
+    return strip_cap(vertices, loop)
 
 
 def _turns_inside_tip(p):
