@@ -281,7 +281,8 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
     from .surface.body_split import boundary_from_points, seam_gap, split_body
 
-    ups, los = (list(b) for b in zip(_wing_boundaries(wing, body, fu, fl)))
+    upper, lower, chained = _wing_boundaries(wing, body, fu, fl)
+    ups, los = [upper], [lower]
     fins, port = [], []
     for comp, up, lo in attached:
         if comp.span_axis == 1:
@@ -312,9 +313,8 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
                    "each half")
     six, _ = juncture_networks(wing, body, fu, fl, 6, n_half, stations)
     nets["wing upper"], nets["wing lower"] = six["wing upper"], six["wing lower"]
-    # A line that turns back at the leading edge lies partly on the other block's boundary.
-    turned = ups[0].points.shape != fu.start.shape or los[0].points.shape != fl.start.shape
-    on_u, on_l = (ups[0].points, los[0].points) if turned else (fu.start, fl.start)
+    # A line that turns back at an end lies partly on the other block's boundary.
+    on_u, on_l = (upper.points, lower.points) if chained else (fu.start, fl.start)
     seams = [{"a": "body upper", "b": "wing upper", "seam": "fillet start line",
               "points": len(fu.start), "max_gap": seam_gap(on_u, nets["body upper"])},
              {"a": "body lower", "b": "wing lower", "seam": "fillet start line",
@@ -330,18 +330,20 @@ def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
 
 
 def _wing_boundaries(wing, body, fu, fl):
-    """(upper, lower) Boundary of the fuselage's blocks beside the wing: its upper and lower
-    fillet start lines (the intersection lines without a fillet), each from its leading-edge
-    point aft (:func:`juncture.surface.body_split.forward`); where one line turns back at
-    an end, that run is the other block's boundary ahead of (after) that block's own line
-    (:func:`juncture.surface.body_split.footprint_chains`). Without a fillet the rows at
-    body stations between the points end on the wing's exact intersection there."""
+    """(upper, lower, chained): the Boundary of the fuselage's blocks beside the wing, its
+    upper and lower fillet start lines (the intersection lines without a fillet), each from
+    its leading-edge point aft (:func:`juncture.surface.body_split.forward`); where one line
+    turns back at an end (``chained``), that run is the other block's boundary ahead of
+    (after) that block's own line (:func:`juncture.surface.body_split.footprint_chains`).
+    Without a fillet the rows at body stations between the points end on the wing's exact
+    intersection there."""
     from .surface.body_split import Boundary, footprint_chains, forward
 
     sharp = fu.kind == "none" and fl.kind == "none"   # rows end on the wing itself
     lines, names = (fu, fl), ("upper", "lower")
     chains = footprint_chains(fu.start, fl.start)
-    if chains is None:
+    chained = chains is not None
+    if not chained:
         chains = [[(s, i) for i in np.flatnonzero(forward(line.start[:, 0]))]
                   for s, line in enumerate(lines)]
         exact = [_exact(wing, body, n, line.start) if sharp else None
@@ -353,7 +355,7 @@ def _wing_boundaries(wing, body, fu, fl):
         pts = np.array([lines[s].start[i] for s, i in chain]).reshape(-1, 3)
         theta = np.array([lines[s].theta_start[i] for s, i in chain], float)
         out.append(Boundary(pts[:, 0], theta, "wing", pts, ex))
-    return out
+    return (*out, chained)
 
 
 def _chain_exact(wing, body, lines, chain):
