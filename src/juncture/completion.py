@@ -393,13 +393,11 @@ def _region_boundary(comp, body, side, inter):
     """The Boundary of the fuselage's block on ``comp``'s ``side`` (a canard or tail): its
     intersection points with their angles; a line continued to the plane of symmetry ends
     at its point there, with the angle of the body's top or bottom (:func:`_ended`)."""
-    from .surface.body_split import Boundary, forward
+    from .surface.body_split import boundary_from_points, forward
 
     k = forward(inter.points[:, 0])
-    pts, theta = inter.points[k], inter.theta[k]
-    ok = np.all(np.isfinite(pts), axis=1)
-    return Boundary(pts[ok, 0], theta[ok], comp.name, pts[ok],
-                    _exact(comp, body, side, inter.points))
+    return boundary_from_points(body, inter.points[k], comp.name,
+                                _exact(comp, body, side, inter.points), inter.theta[k])
 
 
 def _exact(comp, body, side, points, mirrored=False, either=False):

@@ -52,12 +52,14 @@ class Boundary:
         return np.interp(x, self.x, self.theta)
 
 
-def boundary_from_points(body, points, name="", exact=None):
-    """A Boundary through points lying on ``body`` (NaN rows skipped)."""
+def boundary_from_points(body, points, name="", exact=None, theta=None):
+    """A Boundary through points lying on ``body`` (NaN rows skipped), at their body angles
+    or at the angles ``theta`` given (a point off the body: the top's or bottom's)."""
     from ..intersect.body import _body_angle
 
     ok = np.all(np.isfinite(points), axis=1)
-    return Boundary(points[ok, 0], _body_angle(body, points[ok]), name, points[ok], exact)
+    theta = _body_angle(body, points[ok]) if theta is None else np.asarray(theta)[ok]
+    return Boundary(points[ok, 0], theta, name, points[ok], exact)
 
 
 def _at_stations(body, region, xs):
