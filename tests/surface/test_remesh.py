@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, given, settings
 import juncture as jc
 from juncture.surface.assemble import SurfaceMesh, assemble
 from juncture.surface.chart import disc, locate, lscm
-from juncture.surface.check import check_mesh
+from juncture.surface.check import check_mesh, self_intersections
 from juncture.surface.pipeline import quality
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
@@ -232,15 +232,18 @@ def test_the_transport_with_a_fillet_and_keep_area_gets_good_angles(transport):
 def test_surfaces_that_cross_when_re_triangulated_keep_their_own_triangles(monkeypatch):
     """A generated airplane (tests/data/generated/README.md) whose pod tip crossed itself
     when re-triangulated (flat triangles at its pointed tip; without the drop of their
-    refinement points, FLAT3D = 0, it still does): re-triangulated once more with that pod's
-    triangles kept, the airplane passes every check and keeps good angles elsewhere. With
-    the drop, the first re-triangulation passes."""
+    refinement points, FLAT3D = 0, and without splitting a chart whose scale varies too much,
+    patches.SPLITS = 0, it still does): re-triangulated once more with that pod's triangles
+    kept, the airplane passes every check and keeps good angles elsewhere. With the drop,
+    the first re-triangulation passes."""
+    import juncture.surface.patches as pa
     import juncture.surface.remesh as rm
 
     assembled = assemble(_geo(DATA / "generated" / "remesh"
                               / "pod_tip_crossing_when_re_triangulated.inp"))
     assert check_mesh(*_arrays(remesh(assembled))).ok
     monkeypatch.setattr(rm, "FLAT3D", 0.0)
+    monkeypatch.setattr(pa, "SPLITS", 0)
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).intersecting_pairs > 0
     better = _kept_where_needed(assembled)
@@ -409,3 +412,23 @@ def test_a_blunt_trailing_edge_running_into_the_tip_is_capped_as_tip_and_strip()
     p = surface.vertices[surface.triangles[cap]]
     longest = np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2).max()
     assert longest < 0.05 * np.ptp(surface.vertices[:, 1])
+
+
+def test_a_pod_whose_chart_varies_too_much_is_charted_in_halves(monkeypatch):
+    """A generated airplane (tests/data/generated/README.md) whose pod, pointed at both ends,
+    has the wing's footprint cut out: one disc, whose chart's scale varies 107-fold. Charted
+    in halves (patches.charts) it re-triangulates with no crossing and no angle under 5
+    degrees; as one chart (patches.SPLITS = 0) it crossed itself."""
+    import juncture.surface.patches as pa
+
+    assembled = assemble(_geo(DATA / "generated" / "remesh"
+                              / "pod_under_a_wing_charted_in_halves.inp"))
+    pod = [assembled.surfaces.index(n) for n in ("pod 1", "pod 1 image")]
+    better = remesh(assembled)
+    assert check_mesh(*_arrays(better)).ok
+    on_pod = np.isin(better.surface, pod)
+    assert triangle_angles(better.vertices, better.triangles[on_pod]).min() >= 5.0
+    monkeypatch.setattr(pa, "SPLITS", 0)
+    first = remesh(assembled)
+    crossing = self_intersections(first.vertices, first.triangles)
+    assert np.isin(first.surface[crossing.ravel()], pod).all() and len(crossing)

@@ -3,7 +3,8 @@
 A patch is the connected part of one network or cap (:func:`patches`; a closed pod is
 opened at its middle ring). :func:`chart` flattens it conformally
 (:func:`juncture.surface.chart.lscm`) as it is (holes stay holes) or cut open into a disc (a
-tube, or one that flattens onto an annulus whose scale varies more than :data:`SPREAD`), and
+tube, or one that flattens onto an annulus whose scale varies more than :data:`SPREAD`);
+:func:`charts` splits a patch whose chart still varies that much in halves, and
 keeps what :mod:`juncture.surface.remesh` needs of it: its boundary edges (the constraints),
 normals and areas, the shortest edge refinement may make and the vertices a triangulation
 starts from.
@@ -17,7 +18,7 @@ import numpy as np
 
 from .chart import disc, finder, lscm, patch_edges
 
-__all__ = ["Patch", "patches", "chart", "spread", "area3", "SHORTEST", "SLIVER", "SPREAD",
+__all__ = ["Patch", "patches", "chart", "charts", "spread", "area3", "SHORTEST", "SLIVER", "SPREAD",
            "NEAR", "SUPER", "SAMPLES", "taper"]
 
 #: Refinement makes no edge shorter than this share of a chart's median edge.
@@ -34,6 +35,10 @@ SPREAD = 10.0
 NEAR = 0.02
 #: Samples of a patch's free boundary pieces in the k-d tree that finds the points near them.
 SAMPLES = 4000
+#: A patch charted with a larger spread is split in halves at most this many times ...
+SPLITS = 3
+#: ... each with at least this many triangles.
+MINIMUM = 8
 SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
 
 
@@ -59,46 +64,80 @@ class Patch:
     free: np.ndarray | None = None       # boundary edges whose split points stay on them
     near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2)
     keys: list | None = None             # boundary edges as (global a, global b), a < b
+    spread: float = 1.0                  # how much the chart's scale varies (spread())
 
 
 def patches(mesh):
     """Connected parts of every surface id, as (global triangle rows)."""
+    out = []
+    for s in np.unique(mesh.surface):
+        for rows in _connected(mesh, np.flatnonzero(mesh.surface == s)):
+            out.extend(_opened(mesh, rows))
+    return out
+
+
+def _connected(mesh, rows):
+    """The triangle ``rows`` as their parts connected through edges."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
-    out = []
-    for s in np.unique(mesh.surface):
-        rows = np.flatnonzero(mesh.surface == s)
-        t = mesh.triangles[rows]
-        _, und, uses, inverse = patch_edges(t)
-        owner = np.tile(np.arange(len(t)), 3)
-        order = np.argsort(inverse, kind="stable")
-        inv, own = inverse[order], owner[order]
-        same = inv[1:] == inv[:-1]
-        g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
-                       shape=(len(t), len(t)))
-        count, label = connected_components(g, directed=False)
-        for k in range(count):
-            out.extend(_opened(mesh, rows[label == k]))
-    return out
+    t = mesh.triangles[rows]
+    _, und, uses, inverse = patch_edges(t)
+    owner = np.tile(np.arange(len(t)), 3)
+    order = np.argsort(inverse, kind="stable")
+    inv, own = inverse[order], owner[order]
+    same = inv[1:] == inv[:-1]
+    g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
+                   shape=(len(t), len(t)))
+    count, label = connected_components(g, directed=False)
+    return [rows[label == k] for k in range(count)]
 
 
 def _opened(mesh, rows):
     """A closed part (a pod pointed at both ends: no boundary, so no disc to chart) as its
-    two halves on either side of the ring of vertices nearest its middle along its longest
-    axis; the ring's edges become a seam between them. Any other part as it is."""
-    t = mesh.triangles[rows]
-    _, _, uses, _ = patch_edges(t)
+    two halves (:func:`_halves`). Any other part as it is."""
+    _, _, uses, _ = patch_edges(mesh.triangles[rows])
     if len(rows) < 8 or np.any(uses != 2):
         return [rows]
+    return _halves(mesh, rows) or [rows]
+
+
+def _halves(mesh, rows):
+    """The triangles ``rows`` as their two halves on either side of the ring of vertices
+    nearest their middle along their longest axis (the ring's edges become a seam between
+    them), or None where one side would be empty."""
+    t = mesh.triangles[rows]
     p = mesh.vertices[np.unique(t)]
     axis = int(np.argmax(np.ptp(p, axis=0)))
     c = mesh.vertices[:, axis]
     ring = p[np.argmin(np.abs(p[:, axis] - np.median(p[:, axis]))), axis]
     low = (c[t] <= ring).all(axis=1)
     if low.all() or not low.any():
-        return [rows]
+        return None
     return [rows[low], rows[~low]]
+
+
+def charts(mesh, rows, depth=None):
+    """The :class:`Patch` charts of the triangles ``rows``, or None if they cannot be
+    charted: one (:func:`chart`), or where its scale varies more than :data:`SPREAD`
+    (a pod pointed at both ends with a pylon's or wing's footprint cut out of it charts as a
+    disc whose far end LSCM squeezes to a point: straight chart triangles there cross in
+    3-D) the charts of its halves (:func:`_halves`), each split again the same way, at most
+    :data:`SPLITS` times, as long as every piece charts."""
+    depth = SPLITS if depth is None else depth
+    patch = chart(mesh, rows)
+    if patch is None or depth == 0 or patch.spread <= SPREAD:
+        return None if patch is None else [patch]
+    parts = [part for half in _halves(mesh, rows) or [] for part in _connected(mesh, half)]
+    if len(parts) < 2 or min(map(len, parts)) < MINIMUM:
+        return [patch]
+    out = []
+    for part in parts:
+        got = charts(mesh, part, depth - 1)
+        if got is None:
+            return [patch]
+        out.extend(got)
+    return out
 
 
 def chart(mesh, rows):
@@ -148,7 +187,8 @@ def _patch(mesh, rows, tri, ids, uv, edges, cross, _):
     return Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
                   int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
                   float(np.ptp(p.reshape(-1, 3), axis=0).max()), finder(uv, tri),
-                  _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges))
+                  _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges),
+                  spread=spread(uv[tri], double))
 
 
 def spread(flat, double):

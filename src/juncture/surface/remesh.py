@@ -36,7 +36,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
-from .patches import SHORTEST, SUPER, area3, chart, patches, taper
+from .patches import SHORTEST, SUPER, area3, charts, patches, taper
 from .splits import Splits, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
@@ -483,10 +483,10 @@ def _sorted_patches(mesh, keep, lift, splits):
             strips.append(thin)
             presplit(thin, mesh.vertices, splits)
             continue
-        patch = None if held else chart(mesh, rows)
-        if patch is None:
+        got = None if held else charts(mesh, rows)
+        if got is None:
             kept.append(rows)
-        else:
+        for patch in got or ():
             patch.lift = lift
             charted.append(patch)
     _mark_free(charted, splits)
