@@ -207,3 +207,22 @@ def test_a_line_running_aft_of_the_trailing_edge_bounds_the_other_block_after_it
     up_chain, low_chain = footprint_chains(upper, lower)
     assert up_chain == [(0, 0), (0, 1), (0, 2), (0, 3), (1, 2)]
     assert low_chain == [(1, 0), (1, 1), (1, 2)]
+
+
+def test_a_blunt_trailing_edge_at_one_station_leaves_one_line_behind_it():
+    """A blunt trailing edge whose two points lie at one body station (the wing's root
+    section in a station's plane): the two curves end there at two points, but behind it
+    both blocks end on one line (the upper's), with the same points: before, the lower
+    block ran on from its own point and the body between the two lines, as long as the
+    fuselage behind the wing, belonged to neither (capped flat by assembly)."""
+    body = CircularBody("body", np.linspace(0.0, 100.0, 11),
+                        np.r_[0.0, 3.0, 4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 3.5, 2.5, 1.0])
+    xs = np.array([30.0, 40.0, 55.0])
+    upper = _region(body, xs, [-0.1, 0.05, -0.1])
+    lower = _region(body, xs, [-0.1, -0.3, -0.2])
+    nets = split_body(body, [upper], [lower])
+    up, lo = nets["body upper"][:, -1], nets["body lower"][:, -1]
+    aft = lambda p: p[p[:, 0] > 55.0]  # noqa: E731
+    assert len(aft(up)) >= 4 and _keys(aft(up)) == _keys(aft(lo))
+    at_edge = lambda p: _keys(p[p[:, 0] == 55.0])  # noqa: E731
+    assert at_edge(up) == _keys(upper.points[-1:]) and at_edge(lo) == _keys(lower.points[-1:])

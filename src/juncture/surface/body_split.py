@@ -218,7 +218,8 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     lower_regions = [_at_stations(body, r, xl) for r in lower_regions]
     fins = [_at_stations(body, f, xu) for f in fins]
     th_u = bounding_curve(xu, upper_regions, x_nose, x_end, side)
-    th_l = bounding_curve(xl, lower_regions, x_nose, x_end, side)
+    th_l = _one_curve(xl, bounding_curve(xl, lower_regions, x_nose, x_end, side), xu, th_u,
+                      spans)
     top = np.full(xu.size, top_value)
     for fin in fins:
         inside = (xu >= fin.x[0]) & (xu <= fin.x[-1])
@@ -248,6 +249,25 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         nets["body middle"] = orient(middle_block(body, overlap, *regions, inner, n_middle,
                                                   ends), radial)
     return nets
+
+
+def _one_curve(xl, th_l, xu, th_u, spans):
+    """The lower bounding curve ``th_l`` taking the upper's angles at the stations both have
+    outside every span: there the two blocks end on one line. They do by construction
+    where a region's two curves end at one point (:func:`_shared_ends`); where they end at
+    one station at two points (a blunt trailing edge at the wing's root section, its base
+    in the plane of a body station), the two curves ran on from the two points to the body's
+    end, and the body between them, a sliver as long as the fuselage behind the wing,
+    belonged to neither block (it was capped flat: a held-out airplane's 44 ft cap, 0.02 ft
+    wide). Now the triangle between the two points and the next station is left to a cap."""
+    out = np.ones(xl.size, bool)
+    for lo, hi in spans:
+        out &= (xl < lo) | (xl > hi)
+    k = np.minimum(np.searchsorted(xu, xl), xu.size - 1)
+    same = out & (xu[k] == xl)
+    th_l = th_l.copy()
+    th_l[same] = th_u[k[same]]
+    return th_l
 
 
 def _shared_ends(uppers, lowers, fars):
