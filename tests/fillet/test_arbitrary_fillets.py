@@ -31,6 +31,7 @@ from hypothesis import strategies as st
 
 import juncture as jc
 from juncture.fillet import circular_fillet, cubic_fillet, wedge_area
+from juncture.fillet.compensation import _ACCEPT
 from juncture.intersect import intersect_body_both
 from juncture.model import ArbitraryBody
 from tests.deckgen import read_text, references, wing_body_decks
@@ -258,8 +259,8 @@ def _surface_areas(body, x, n=20001):
 
 def check_arbitrary_keep_area(text, desc, fillet="cubic"):
     cfg = read_text(text)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
         try:
             geo = jc.complete(cfg, fillet, keep_area=True)
         except jc.GeometryError as exc:  # refused in one line naming body and station
@@ -278,8 +279,11 @@ def check_arbitrary_keep_area(text, desc, fillet="cubic"):
     a0 = np.array([_deck_area(ref, x) for x in st_["x"]])
     # (A station aft of an open base, where a wing runs past the fuselage: nothing there.)
     on = a0 > 0
+    # Stopped just short of the tolerance, the best iterate is kept with a warning that
+    # says so (compensation._ACCEPT): its residual, not 1e-7, is what holds then.
+    short = any("area compensation stopped at a residual" in str(w.message) for w in said)
     np.testing.assert_allclose(_surface_areas(body1, st_["x"][on]) + st_["area_fillet"][on],
-                               a0[on], rtol=1e-7)
+                               a0[on], rtol=_ACCEPT if short else 1e-7)
     assert np.all(np.abs(st_["area_fillet"][~on]) <= 1e-12 * a0.max())
     assert np.all(st_["area_fillet"] >= -1e-12 * a0.max())
     xs = np.linspace(ref.x[0], ref.x[-1], 301)[1:-1]
