@@ -256,8 +256,9 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monk
     """A generated airplane with a cubic fillet and keep_area (tests/data/generated/README.md)
     where two re-triangulated surfaces made the same triangle at a narrow corner, an edge
     across each patch between two of its boundary points: such edges are now split
-    (remesh.CHORD) and the first re-triangulation passes every check. Without that split,
-    the surfaces that make the triangle are kept as assembled, and the airplane passes."""
+    (remesh.CHORD, and since 2026-11-27 remesh._split_shared_chords too) and the first
+    re-triangulation passes every check. Without either split, the surfaces that make the
+    triangle are kept as assembled, and the airplane passes."""
     import juncture.surface.remesh as rm
 
     geo = _geo(DATA / "generated" / "remesh" / "fillet_corner_shared_when_re_triangulated.inp",
@@ -265,6 +266,7 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monk
     assembled = assemble(geo)
     assert check_mesh(*_arrays(remesh(assembled))).ok
     monkeypatch.setattr(rm, "CHORD", np.inf)
+    monkeypatch.setattr(rm, "_split_shared_chords", lambda *args: None)
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).nonmanifold_edges > 0
     _kept_where_needed(assembled)
@@ -432,3 +434,19 @@ def test_a_pod_whose_chart_varies_too_much_is_charted_in_halves(monkeypatch):
     first = remesh(assembled)
     crossing = self_intersections(first.vertices, first.triangles)
     assert np.isin(first.surface[crossing.ravel()], pod).all() and len(crossing)
+
+
+def test_a_chord_two_patches_both_make_is_split(monkeypatch):
+    """A generated airplane (tests/data/generated/README.md) with a wing tip of no chord:
+    the upper and lower patches both joined a leading-edge point to a trailing-edge point
+    near the tip by the same chord (edges in four triangles). Split, the first
+    re-triangulation passes every check; without the split it does not."""
+    import juncture.surface.remesh as rm
+
+    assembled = assemble(_geo(DATA / "generated" / "remesh" / "wing_tip_of_no_chord.inp"))
+    better = remesh(assembled)
+    assert check_mesh(*_arrays(better)).ok
+    assert triangle_angles(better.vertices, better.triangles).min() >= 5.0
+    monkeypatch.setattr(rm, "_split_shared_chords", lambda *args: None)
+    first = remesh(assembled)
+    assert check_mesh(*_arrays(first)).nonmanifold_edges > 0

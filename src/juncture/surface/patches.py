@@ -65,6 +65,8 @@ class Patch:
     near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2)
     keys: list | None = None             # boundary edges as (global a, global b), a < b
     spread: float = 1.0                  # how much the chart's scale varies (spread())
+    pts: np.ndarray | None = None        # chart coordinates of the current triangulation's
+    local: np.ndarray | None = None      # vertices, and its triangles over them
 
 
 def patches(mesh):

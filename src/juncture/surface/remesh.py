@@ -233,7 +233,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         patch.extra_uv.append(far)
         patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, far)[0]))
         return False
-    patch.out = gid[local]
+    patch.out, patch.pts, patch.local = gid[local], pts, local
     return True
 
 
@@ -318,6 +318,39 @@ def _chords(patch, splits, vertices, pts, gid, local, boundary):
     xyz = splits.all()[gid[ends]]
     off = np.linalg.norm(on - xyz.mean(axis=1), axis=1)
     return mid[off > CHORD * np.linalg.norm(xyz[:, 1] - xyz[:, 0], axis=1)]
+
+
+def _split_shared_chords(charted, splits, vertices):
+    """Split the edges that two patches both make inside themselves (each edge of the
+    triangulations in more than two triangles): its chart midpoint joins each such patch
+    as an inner point and the patch is triangulated again. Two patches whose boundaries
+    share two points can each join them by the same chord where their surfaces nearly
+    meet there (a wing's upper and lower surfaces at a tip of no chord, between a point on
+    the leading edge and one on the trailing edge): four triangles on one edge."""
+    done = [p for p in charted if p.out is not None and p.local is not None]
+    if not done:
+        return
+    n = len(splits.all())
+    def edges(t):
+        return np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+
+    rows = [edges(p.local) for p in done]            # chart ids, edge by edge as ...
+    keys = [np.sort(edges(p.out), axis=1) for p in done]     # ... the global ones
+    flat = [k[:, 0] * n + k[:, 1] for k in keys]
+    every, uses = np.unique(np.concatenate(flat), return_counts=True)
+    many = every[uses > 2]
+    if not len(many):
+        return
+    for patch, key, ends in zip(done, flat, rows):
+        mine, count = np.unique(key[np.isin(key, many)], return_counts=True)
+        inside = mine[count == 2]             # in two of this patch's triangles
+        if not len(inside):
+            continue
+        order = np.argsort(key, kind="stable")
+        mid = patch.pts[ends[order[np.searchsorted(key[order], inside)]]].mean(axis=1)
+        patch.extra_uv.append(mid)
+        patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, mid)[0]))
+        patch.seen = -1
 
 
 def _bent(patch, splits, vertices, pts, gid, local, shape):
@@ -451,6 +484,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
                 raise GeometryError(f"the chart of {mesh.surfaces[patch.surface]} could "
                                     "not be triangulated")
             patch.seen = known if done else -1
+        if rnd < ROUNDS - 1:
+            _split_shared_chords(charted, splits, mesh.vertices)
     tris, comp, surf = [], [], []
     for patch in charted:
         if patch.out is None or patch.seen != _known(patch, splits):
