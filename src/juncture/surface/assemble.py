@@ -28,7 +28,7 @@ import numpy as np
 from .seams import split_seams
 
 __all__ = ["SurfaceMesh", "assemble", "boundary_loops", "simple_loops", "cap_polygon",
-           "strip_cap", "strip_chains", "zip_strip"]
+           "strip_cap", "strip_chains", "zip_strip", "equal_run"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -239,6 +239,7 @@ def _zip_chains(pa, pb, angles=False):
     shorter or, with ``angles``, whose next triangle has the larger smallest angle (never a
     triangle on one straight side and its corner, where many points lie on one side)."""
     n, m = len(pa), len(pb)
+    fa, fb = _fractions(pa), _fractions(pb)
     i = j = 0
     out = []
     while i < n - 1 or j < m - 1:
@@ -251,6 +252,13 @@ def _zip_chains(pa, pb, angles=False):
             block_b = (i == 0 < j) or (j == m - 2 and i < n - 2)
             on_a = block_b if block_a != block_b else (
                 _smallest(pa[i], pa[i + 1], pb[j]) >= _smallest(pa[i], pb[j + 1], pb[j]))
+            # never on along a chain already past the other's point after next (by length
+            # run): one side much finer than the other near a pinch ran away from it, a
+            # triangle from the root to the tip
+            if fa[i] >= fb[min(j + 2, m - 1)]:
+                on_a = False
+            elif fb[j] >= fa[min(i + 2, n - 1)]:
+                on_a = True
         else:
             on_a = np.linalg.norm(pa[i + 1] - pb[j]) <= np.linalg.norm(pa[i] - pb[j + 1])
         if on_a:
@@ -260,6 +268,12 @@ def _zip_chains(pa, pb, angles=False):
             out.append((i, n + j + 1, n + j))
             j += 1
     return np.array(out, int)
+
+
+def _fractions(p):
+    """(n,) the share of a polyline's length run at each of its points."""
+    run = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(p, axis=0), axis=1))])
+    return run / run[-1] if run[-1] > 0.0 else np.linspace(0.0, 1.0, len(p))
 
 
 def _smallest(p, q, r):
@@ -370,7 +384,7 @@ def _planar_cap(vertices, loop):
     return tri[:, ::-1] if _runs_with(tri, loop) else tri
 
 
-def _equal_run(p):
+def equal_run(p):
     """(start, length) of the longest cyclic run of consecutive points with one coordinate
     bit-identical (a wing tip's points share its span station), or None (under 3)."""
     k, best = len(p), None
@@ -399,7 +413,7 @@ def _turns_inside_tip(p):
     """Whether a loop's sharpest turn back lies inside a run of points that share a span
     station (a tip's leading edge): taken for one strip from there, a blunt trailing edge
     running into the tip was zipped from the tip's trailing edge to the root."""
-    found, corners = _equal_run(p), _corners(p)
+    found, corners = equal_run(p), _corners(p)
     if found is None or corners is None:
         return False
     start, n = found
@@ -411,7 +425,7 @@ def _tip_and_strip(vertices, loop, tol):
     """Cap triangles of a loop that is a planar tip and a thin strip joined (a wing whose
     blunt trailing edge runs into its tip: the tip's points share the span station), split
     along the chord between the tip's two ends; None where it is not that."""
-    found = _equal_run(vertices[loop])
+    found = equal_run(vertices[loop])
     if found is None:
         return None
     start, n = found

@@ -508,7 +508,7 @@ def _sorted_patches(mesh, keep, lift, splits):
     """(charted patches, kept triangle rows, strips): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now); a patch in ``keep``
     or one that cannot be charted keeps its triangles."""
-    from .strips import presplit, strip
+    from .strips import presplit, strip, tip_and_strip
 
     charted, kept, strips = [], [], []
     for rows in patches(mesh):
@@ -518,6 +518,11 @@ def _sorted_patches(mesh, keep, lift, splits):
             strips.append(thin)
             presplit(thin, mesh.vertices, splits)
             continue
+        parts = None if held else tip_and_strip(mesh, rows)
+        if parts is not None:           # the strip zipped, the tip charted
+            rows, thin = parts
+            strips.append(thin)
+            presplit(thin, mesh.vertices, splits)
         got = None if held else charts(mesh, rows)
         if got is None:
             kept.append(rows)

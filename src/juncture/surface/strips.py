@@ -19,9 +19,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .assemble import boundary_loops, strip_chains, zip_strip
+from .assemble import boundary_loops, equal_run, strip_chains, zip_strip
 
-__all__ = ["Strip", "strip", "presplit", "zipped", "STRIP", "SPACING", "MOST"]
+__all__ = ["Strip", "strip", "tip_and_strip", "presplit", "zipped", "STRIP", "SPACING", "MOST"]
 
 #: A cap patch is a strip when its area is below this share of a circle's of its boundary's
 #: length (a rectangle narrower than about STRIP / pi of its length).
@@ -39,6 +39,29 @@ class Strip(NamedTuple):
     a: np.ndarray        # its two sides, corner to corner (vertex ids; see strip_chains)
     b: np.ndarray
     normal: np.ndarray   # the sum of its triangles' area vectors (its orientation)
+
+
+def tip_and_strip(mesh, rows):
+    """(the tip's triangle rows, a :class:`Strip` of the rest) of a cap that is a planar tip
+    and a thin strip joined (a blunt trailing edge running into the tip, capped so by
+    :func:`juncture.surface.assemble.assemble`: the tip's points share its span station),
+    else None. As one patch the strip was refined in the cap's chart, down to its width, and
+    pushed points a few thousandths of a foot apart onto the wing's seams (slivers there)."""
+    if not mesh.surfaces[mesh.surface[rows[0]]].endswith(" cap"):
+        return None
+    tri = mesh.triangles[rows]
+    loops = boundary_loops(tri)
+    if len(loops) != 1:
+        return None
+    found = equal_run(mesh.vertices[loops[0]])
+    if found is None:
+        return None
+    start, n = found
+    tip = np.isin(tri, np.roll(loops[0], -start)[:n]).all(axis=1)
+    if tip.all() or not tip.any():
+        return None
+    thin = strip(mesh, rows[~tip])
+    return None if thin is None else (rows[tip], thin)
 
 
 def _area_vectors(p):
