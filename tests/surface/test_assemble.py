@@ -219,3 +219,24 @@ def test_no_flat_cap_runs_along_the_fuselage_behind_a_blunt_trailing_edge():
     x = mesh.vertices[mesh.triangles[rows]][:, :, 0]
     side = x.max(axis=1) < geo.configuration["body"].x_global[-1]     # not the blunt base
     assert side.sum() <= 2 and (not side.any() or np.ptp(x[side]) < 4.0)
+
+
+def test_a_gap_between_two_blocks_is_filled_from_one_side_only():
+    """A generated airplane (tests/data/generated/README.md) whose blunt trailing edge has
+    both points at one station on the fuselage's flat side: behind them the two blocks end
+    on one curve and leave a gap of three points. Both blocks took the other's trailing-edge
+    point into their edge and covered it twice (edges in four triangles, crossing pairs);
+    now the assembled surface passes every check."""
+    import warnings
+
+    import juncture as jc
+    from juncture.surface.check import check_mesh
+    from tests.support import DATA
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(DATA / "generated" / "assembly"
+                                  / "blunt_trailing_edge_at_a_station_on_a_flat_side.inp"))
+    mesh = assemble(geo)
+    report = check_mesh(mesh.vertices, mesh.triangles)
+    assert report.ok, report.failures()

@@ -115,6 +115,7 @@ def split_seams(vertices, triangles, component, lens=LENS):
             v = int(ids[k])
             if (touch[v] - {mine} or off[k] <= COLLINEAR) and off[k] < best.get(v, (np.inf,))[0]:
                 best[v] = (float(off[k]), e, float(s[k]))
+    best = _one_side(best, edges)
     per_edge = {}
     for v, (_, e, t_v) in best.items():
         per_edge.setdefault(e, []).append((t_v, v))
@@ -148,6 +149,24 @@ def split_seams(vertices, triangles, component, lens=LENS):
     new = [np.asarray(f, dtype=triangles.dtype).reshape(-1, 3) for _, f in replaced]
     parent = np.concatenate([keep] + [np.full(len(f), r[0]) for r, f in replaced])
     return np.concatenate([triangles[keep]] + new), parent
+
+
+def _one_side(best, edges):
+    """``best`` (point: (offset, edge, parameter)) without the second of two insertions that
+    would fill one triangle from both sides: point ``c`` into edge ``a -> b`` and ``a`` (or
+    ``b``) into an edge between ``b`` (or ``a``) and ``c``. Where a thin gap of three points
+    lies between two blocks of one body (behind a blunt trailing edge in the plane of a
+    fuselage station, the upper and lower blocks ending on one curve from the next station),
+    each took the other's trailing-edge point and both covered the gap: edges in four
+    triangles. The insertion nearer its edge is kept."""
+    seen, out = {}, dict(best)
+    for v, (_, e, _) in sorted(best.items(), key=lambda item: item[1][0]):
+        key = frozenset((*edges[e].tolist(), v))
+        if len(key) == 3 and key in seen:
+            del out[v]
+        else:
+            seen[key] = v
+    return out
 
 
 def _wide_chains(vertices, edges, owner, component, touch, links, per_edge, taken):
