@@ -119,11 +119,14 @@ def _shared(mesh):
     return (hi >= 0) & (lo != hi)
 
 
-def _lifter(geometry, mesh, kind, move):
+def _lifter(geometry, mesh, kind, move, classify):
     """``lift(points, corners, component, surface)`` calling ``move(model, points, corners
-    (k, 3, 3), seam (k, 3), image, tol)`` (which returns the points and their sizes) for
-    points on components of type ``kind`` (caps excluded), or None when the geometry has
-    none. ``seam``: the corners that other components' triangles share (:func:`_shared`).
+    (k, 3, 3), seam (k, 3), image, tol, sized, flags)`` (which returns the points and their
+    sizes) for points on components of type ``kind`` (caps excluded), or None when the
+    geometry has none. ``seam``: the corners that other components' triangles share
+    (:func:`_shared`); ``flags``: ``classify(model, vertices, image, tol)`` (a tuple of
+    per-vertex arrays: where each vertex lies on the model), made once per model and side
+    for every vertex of the mesh and taken at the corners (k, 3).
 
     ``lift.both(points, corners, component, surface)``: (the lifted points, per point the
     size of the exact surface it is lifted onto: a body's radius, a wing section's largest
@@ -136,6 +139,13 @@ def _lifter(geometry, mesh, kind, move):
     vertices = np.asarray(mesh.vertices, float)
     tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
     shared = _shared(mesh)
+    known = {}
+
+    def flags(model, image, corners):
+        key = (id(model), image)
+        if key not in known:
+            known[key] = classify(model, vertices, image, tol)
+        return tuple(f[corners] for f in known[key])
 
     def both(points, corners, component, surface, sized=True):
         name = mesh.surfaces[int(surface)]
@@ -143,9 +153,10 @@ def _lifter(geometry, mesh, kind, move):
         size = np.full(len(points), np.inf)
         if not len(points) or name.endswith(" cap"):
             return points, size
+        image = name.endswith(" image")
         for model in models.get(int(component), ()):
-            points, got = move(model, points, vertices[corners], shared[corners],
-                               name.endswith(" image"), tol, sized)
+            points, got = move(model, points, vertices[corners], shared[corners], image, tol,
+                               sized, flags(model, image, corners))
             size = np.minimum(size, got)
         return points, size
 
@@ -166,12 +177,17 @@ def body_lift(geometry, mesh):
     """
     from ..model import CircularBody
 
-    return _lifter(geometry, mesh, CircularBody, _onto_circle)
+    return _lifter(geometry, mesh, CircularBody, _onto_circle, _on_circle)
 
 
-def _onto_circle(body, points, corners, seam, image, tol, sized=True):
-    rho, radius, _, _ = _polar(body, corners.reshape(-1, 3), image)
-    on = (np.abs(rho - radius) <= tol).reshape(-1, 3).all(axis=1)
+def _on_circle(body, vertices, image, tol):
+    """(per vertex: on the body's circle within ``tol``,)."""
+    rho, radius, _, _ = _polar(body, vertices, image)
+    return (np.abs(rho - radius) <= tol,)
+
+
+def _onto_circle(body, points, corners, seam, image, tol, sized, flags):
+    on = flags[0].all(axis=1)
     rho, radius, centre, unit = _polar(body, points, image)
     on &= (radius > 0) & (rho > 0) & (_radial(corners, unit) > FACING)
     out = points.copy()
@@ -183,8 +199,8 @@ def _chordwise(wing, p):
     """(span stations, chord fractions, inside the span) of points in the wing's frame."""
     lo, hi = wing.span_stations[0], wing.span_stations[-1]
     s = np.clip(p[:, wing.span_axis], lo, hi)
-    le = wing.point(s, 0.0, "upper")[:, 0]
-    te = wing.point(s, 1.0, "upper")[:, 0]
+    ends = wing.point(np.concatenate([s, s]), np.repeat([0.0, 1.0], len(s)), "upper")[:, 0]
+    le, te = ends[:len(s)], ends[len(s):]
     f = (p[:, 0] - le) / np.where(te > le, te - le, 1.0)
     inside = (p[:, wing.span_axis] >= lo) & (p[:, wing.span_axis] <= hi) & (te > le)
     return s, np.clip(f, 0.0, 1.0), inside & (f >= 0.0) & (f <= 1.0)
@@ -204,10 +220,20 @@ def wing_lift(geometry, mesh):
     when the geometry has no wing-like component."""
     from ..model import WingLike
 
-    return _lifter(geometry, mesh, WingLike, _onto_sections)
+    return _lifter(geometry, mesh, WingLike, _onto_sections, _on_sides)
 
 
-def _onto_sections(wing, points, corners, seam, image, tol, sized=True):
+def _on_sides(wing, vertices, image, tol):
+    """(per vertex: on the upper side within ``tol``, on the lower side), inside the wing's
+    span and chord."""
+    flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
+    c = vertices * flip
+    t = wing.thickness_axis
+    up, low, inside = _thickness(wing, c)
+    return inside & (np.abs(c[:, t] - up) <= tol), inside & (np.abs(c[:, t] - low) <= tol)
+
+
+def _onto_sections(wing, points, corners, seam, image, tol, sized, flags):
     """Points moved along the thickness axis onto the side of the wing their flat triangle
     lies on: each corner on that side within ``tol`` or on a ``seam`` with another component
     (the root line's points at the fuselage's stations lie on the body, off the wing's PCHIP
@@ -215,11 +241,8 @@ def _onto_sections(wing, points, corners, seam, image, tol, sized=True):
     flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
     t = wing.thickness_axis
     corners = corners * flip
-    c = corners.reshape(-1, 3)
-    up, low, inside = _thickness(wing, c)
     facing = np.abs(_normals(corners)[:, t]) > WING_FACING
-    on_up = (inside & (np.abs(c[:, t] - up) <= tol)).reshape(-1, 3)
-    on_low = (inside & (np.abs(c[:, t] - low) <= tol)).reshape(-1, 3)
+    on_up, on_low = flags
     n_up, n_low = on_up.sum(axis=1), on_low.sum(axis=1)
     on_up = (on_up | seam).all(axis=1) & (n_up > 0) & facing
     on_low = (on_low | seam).all(axis=1) & (n_low > 0) & facing

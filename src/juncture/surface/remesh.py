@@ -363,26 +363,27 @@ def _bent(patch, splits, vertices, pts, gid, local, shape):
     count (a nose's tip)."""
     both = getattr(patch.lift, "both", None)
     ends = splits.all()[gid[local]]
-    out = np.zeros(len(local), bool)
     if shape.curvature is None and shape.depth is None:
-        return out
+        return np.zeros(len(local), bool)
     angle, depth = shape.curvature, shape.depth
-    for k in range(3):
-        a, b = ends[:, k], ends[:, (k + 1) % 3]
-        mid = 0.5 * (pts[local[:, k]] + pts[local[:, (k + 1) % 3]])
-        on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
-        corners = patch.ids[patch.tri[under]]
-        if both is None:
-            lifted, size = patch.lift(on, corners, patch.component, patch.surface), np.inf
-        else:
-            lifted, size = both(on, corners, patch.component, patch.surface)
-        sag = np.linalg.norm(lifted - 0.5 * (a + b), axis=1)
-        h = np.linalg.norm(b - a, axis=1)
-        size = np.broadcast_to(size, h.shape)
-        turn = np.inf if angle is None else angle / 8.0 * h
-        most = np.inf if depth is None else depth * size
-        out |= ((sag > turn) | (sag > most)) & (sag > FLOOR * patch.size)
-    return out
+    # the three edges of every triangle at once, edge k of all triangles after edge k - 1
+    nxt = np.roll(np.arange(3), -1)
+    a = ends.transpose(1, 0, 2).reshape(-1, 3)
+    b = ends[:, nxt].transpose(1, 0, 2).reshape(-1, 3)
+    mid = 0.5 * (pts[local.T.ravel()] + pts[local[:, nxt].T.ravel()])
+    on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
+    corners = patch.ids[patch.tri[under]]
+    if both is None or depth is None:     # the surface's size only where depth asks for it
+        lifted, size = patch.lift(on, corners, patch.component, patch.surface), np.inf
+    else:
+        lifted, size = both(on, corners, patch.component, patch.surface)
+    sag = np.linalg.norm(lifted - 0.5 * (a + b), axis=1)
+    h = np.linalg.norm(b - a, axis=1)
+    size = np.broadcast_to(size, h.shape)
+    turn = np.inf if angle is None else angle / 8.0 * h
+    most = np.inf if depth is None else depth * size
+    out = ((sag > turn) | (sag > most)) & (sag > FLOOR * patch.size)
+    return out.reshape(3, -1).any(axis=0)
 
 
 
