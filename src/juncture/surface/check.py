@@ -316,7 +316,25 @@ def _opposite(t, mask):
 
 
 def _one_shared(v, ta, tb, shared):
-    """Triangles sharing one vertex cross when the edge of one opposite it meets the other."""
+    """Triangles sharing one vertex cross when the edge of one opposite it meets the other.
+    Where the rest of one lies strictly on one side of the other's plane they meet only at
+    the shared vertex (the most of them, neighbours on a surface): decided by those two
+    signs alone."""
+    oa = _opposite(ta, shared.any(axis=2))  # (k, 2)
+    ob = _opposite(tb, shared.any(axis=1))
+    hit = np.zeros(len(ta), bool)
+    b_side = [orient3d(v[ta[:, 0]], v[ta[:, 1]], v[ta[:, 2]], v[ob[:, k]]) for k in (0, 1)]
+    rest = np.flatnonzero(b_side[0] * b_side[1] <= 0)
+    a_side = [orient3d(v[tb[rest, 0]], v[tb[rest, 1]], v[tb[rest, 2]], v[oa[rest, k]])
+              for k in (0, 1)]
+    rest = rest[a_side[0] * a_side[1] <= 0]
+    if rest.size:
+        hit[rest] = _one_shared_exact(v, ta[rest], tb[rest], shared[rest])
+    return hit
+
+
+def _one_shared_exact(v, ta, tb, shared):
+    """:func:`_one_shared` for the pairs the planes' signs do not decide."""
     oa = _opposite(ta, shared.any(axis=2))  # (k, 2)
     ob = _opposite(tb, shared.any(axis=1))
     hit = segments_hit_triangles(v[oa[:, 0]], v[oa[:, 1]], v[tb[:, 0]], v[tb[:, 1]],

@@ -238,11 +238,13 @@ def segments_hit_triangles(s0, s1, p, q, r):
     b = orient3d(p, q, r, s1)
     crosses = a * b <= 0
     crosses &= ~((a == 0) & (b == 0))  # a segment in the triangle's plane: the 2-D test
+    i = np.flatnonzero(crosses)        # the rest cannot meet: no need to look further
+    s0, s1, p, q, r = (np.asarray(x, float).reshape(-1, 3)[i] for x in (s0, s1, p, q, r))
     e1 = orient3d(s0, s1, p, q)
     e2 = orient3d(s0, s1, q, r)
     e3 = orient3d(s0, s1, r, p)
-    same = ((e1 >= 0) & (e2 >= 0) & (e3 >= 0)) | ((e1 <= 0) & (e2 <= 0) & (e3 <= 0))
-    return crosses & same
+    crosses[i] = ((e1 >= 0) & (e2 >= 0) & (e3 >= 0)) | ((e1 <= 0) & (e2 <= 0) & (e3 <= 0))
+    return crosses
 
 
 def _drop_axis(p, q, r):
