@@ -294,3 +294,24 @@ def test_control_points_are_the_cubic():
     f = cubic_fillet(wing, body, intersect_body(wing, body, "upper"), n_points=13)
     np.testing.assert_allclose(bezier(f.control, np.linspace(0, 1, 13)), f.points,
                                atol=1e-12)
+
+
+def test_a_fillet_start_stops_at_the_plane_of_symmetry():
+    """A generated high wing (tests/data/generated/README.md) whose upper intersection runs
+    near the fuselage's top: 20 deg above it the cubic fillet's starts lay past the top, on
+    the other half (y < 0), and the fuselage's rows crossed their mirror image. They now
+    stop at the top (said in the log), and the airplane meshes closed with keep_area."""
+    import warnings
+
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "fillet" / "high_wing_fillet_start_past_the_top.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        for keep in (False, True):
+            geo = jc.complete(jc.read(deck), fillet="cubic", keep_area=keep)
+            start = np.asarray(geo.fillets["fillet upper"])[:, 0]
+            assert start[:, 1].min() >= -1e-12 * np.ptp(start[:, 0])
+            assert any("plane of symmetry (top of body)" in line for line in geo.log)
+        surface = jc.mesh(geo)        # the keep_area one; mesh checks it or refuses
+    assert len(surface.triangles) > 0

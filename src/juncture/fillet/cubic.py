@@ -409,6 +409,7 @@ def _start_angles(wing, body, side, sign, lines, I, theta_i, u_full, k, found, s
     phi_fit = _fit_angle(r_i, K_SHARE * mu_full, phi_max)
     phi = np.where(found, np.minimum(theta_u, phi_fit), theta_u)
     reduced = found & (scale > 0) & (phi < theta_u)
+    phi = _within_half(body, side, sign, theta_i, found, scale, phi, wing, log)
     if reduced.any():
         worst = int(np.argmin(np.where(reduced, phi, np.inf)))
         log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(reduced))}: theta_u "
@@ -421,6 +422,25 @@ def _start_angles(wing, body, side, sign, lines, I, theta_i, u_full, k, found, s
                    f"is nearly tangent to {body.name} (less than 1 deg between them): no room "
                    "for a fillet there, the line is left nearly sharp")
     return phi, k_full
+
+
+def _within_half(body, side, sign, theta_i, found, scale, phi, wing, log):
+    """``phi`` no larger than the arc from the intersection to the plane of symmetry on its
+    side (the top above a high wing, the bottom below a low one): a start past it lay on the
+    other half of the fuselage, whose rows then ran back over the plane of symmetry and
+    crossed their own mirror image (held-out high wings with a cubic fillet). The start is
+    then at the top (bottom), where the fillets of both halves meet. A polyline section's
+    start is kept on its half by its frame (:class:`~juncture.fillet.section.PolylineFrame`)."""
+    if not getattr(body, "circular", False):
+        return phi
+    room = np.maximum(sign * (body.extreme(sign) - theta_i), 0.0)
+    over = found & (scale > 0) & (scale * phi > room)
+    if not over.any():
+        return phi
+    log.append(f"{wing.name} {side} fillet lines {line_runs(np.flatnonzero(over))}: theta_u "
+               f"reduced so that the fillet starts no further than the plane of symmetry "
+               f"({'top' if sign > 0 else 'bottom'} of {body.name})")
+    return np.where(over, room / np.where(scale > 0, scale, 1.0), phi)
 
 
 def _check_paper_starts(body, side, wing, E, x_i, theta_i, paper_miss):
