@@ -47,21 +47,26 @@ def tip_and_strip(mesh, rows):
     :func:`juncture.surface.assemble.assemble`: the tip's points share its span station),
     else None. As one patch the strip was refined in the cap's chart, down to its width, and
     pushed points a few thousandths of a foot apart onto the wing's seams (slivers there)."""
-    if not mesh.surfaces[mesh.surface[rows[0]]].endswith(" cap"):
-        return None
-    tri = mesh.triangles[rows]
-    loops = boundary_loops(tri)
-    if len(loops) != 1:
-        return None
-    found = equal_run(mesh.vertices[loops[0]])
+    tri, loop = _cap_loop(mesh, rows)
+    found = None if loop is None else equal_run(mesh.vertices[loop])
     if found is None:
         return None
     start, n = found
-    tip = np.isin(tri, np.roll(loops[0], -start)[:n]).all(axis=1)
+    tip = np.isin(tri, np.roll(loop, -start)[:n]).all(axis=1)
     if tip.all() or not tip.any():
         return None
     thin = strip(mesh, rows[~tip])
     return None if thin is None else (rows[tip], thin)
+
+
+def _cap_loop(mesh, rows):
+    """(the triangles, their one boundary loop) of a cap patch; loop None if the patch is
+    not a cap or has more than one loop."""
+    tri = mesh.triangles[rows]
+    if not mesh.surfaces[mesh.surface[rows[0]]].endswith(" cap"):
+        return tri, None
+    loops = boundary_loops(tri)
+    return tri, (loops[0] if len(loops) == 1 else None)
 
 
 def _area_vectors(p):
@@ -71,15 +76,11 @@ def _area_vectors(p):
 def strip(mesh, rows):
     """A :class:`Strip` of the triangles ``rows`` (one patch) where they are a thin cap
     between two chains, else None."""
-    if not mesh.surfaces[mesh.surface[rows[0]]].endswith(" cap"):
-        return None
-    tri = mesh.triangles[rows]
-    loops = boundary_loops(tri)
-    if len(loops) != 1:
+    tri, lp = _cap_loop(mesh, rows)
+    if lp is None:
         return None
     v = mesh.vertices
     area = _area_vectors(v[tri])
-    lp = loops[0]
     length = np.linalg.norm(v[lp] - v[np.roll(lp, -1)], axis=1).sum()
     if not 4.0 * np.pi * np.linalg.norm(area, axis=1).sum() < STRIP * length ** 2:
         return None
