@@ -148,3 +148,33 @@ def test_a_tip_and_strip_cap_is_charted_and_zipped_apart():
     assert smallest[wing].min() >= 5.0
     ref = union_volume(geo.configuration, n=121, cells=1500)
     assert abs(surface.volume() / ref - 1.0) < 0.005
+
+
+def test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch):
+    """A generated wing of two sections (tests/data/generated/README.md) with a wedge of a
+    trailing edge, 0.017 ft thick at the tip and closed at the root: its surfaces grade down
+    to the strip's pieces (remesh.FINEST); at FINEST = 1e-3 of the charts' median edge (the
+    span) they fanned them (1,917 triangles under 5 deg outside the caps, 99 now: at the
+    root, where the wing runs over the fuselage's top to the plane of symmetry)."""
+    import warnings
+
+    import juncture as jc
+    import juncture.surface.remesh as rm
+    from juncture.surface.quality import triangle_angles
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "remesh" / "two_section_wing_with_a_thin_wedge_trailing_edge.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck))
+
+    def slivers():
+        """Triangles under 5 deg outside the caps."""
+        surface = jc.mesh(geo)
+        smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
+        cap = np.char.endswith(np.array(surface.surfaces)[surface.surface].astype(str), " cap")
+        return int(np.sum((smallest < 5.0) & ~cap))
+
+    assert slivers() < 150
+    monkeypatch.setattr(rm, "FINEST", 1e-3)
+    assert slivers() > 1000
