@@ -260,11 +260,8 @@ def _one_curve(xl, th_l, xu, th_u, spans):
     end, and the body between them, a sliver as long as the fuselage behind the wing,
     belonged to neither block (it was capped flat: a held-out airplane's 44 ft cap, 0.02 ft
     wide). Now the triangle between the two points and the next station is left to a cap."""
-    out = np.ones(xl.size, bool)
-    for lo, hi in spans:
-        out &= (xl < lo) | (xl > hi)
     k = np.minimum(np.searchsorted(xu, xl), xu.size - 1)
-    same = out & (xu[k] == xl)
+    same = _outside(xl, spans) & (xu[k] == xl)
     th_l = th_l.copy()
     th_l[same] = th_u[k[same]]
     return th_l
@@ -311,14 +308,18 @@ def _with_point(region, other, end):
                     np.concatenate([region.points, other.points[pick]]), region.exact)
 
 
+def _outside(x, spans):
+    """(k,) bool: the stations x that lie outside every span (lo, hi)."""
+    out = np.ones(x.size, bool)
+    for lo, hi in spans:
+        out &= (x < lo) | (x > hi)
+    return out
+
+
 def _shared_stations(xu, xl, spans):
     """Upper and lower stations, each with the other's that lie outside every span."""
-    def outside(x):
-        out = np.ones(x.size, bool)
-        for lo, hi in spans:
-            out &= (x < lo) | (x > hi)
-        return x[out]
-    return np.union1d(xu, outside(xl)), np.union1d(xl, outside(xu))
+    return (np.union1d(xu, xl[_outside(xl, spans)]),
+            np.union1d(xl, xu[_outside(xu, spans)]))
 
 
 def _empty(region, far):

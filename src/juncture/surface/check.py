@@ -329,14 +329,13 @@ def _one_shared(v, ta, tb, shared):
               for k in (0, 1)]
     rest = rest[a_side[0] * a_side[1] <= 0]
     if rest.size:
-        hit[rest] = _one_shared_exact(v, ta[rest], tb[rest], shared[rest])
+        hit[rest] = _one_shared_exact(v, ta[rest], tb[rest], shared[rest], oa[rest], ob[rest])
     return hit
 
 
-def _one_shared_exact(v, ta, tb, shared):
-    """:func:`_one_shared` for the pairs the planes' signs do not decide."""
-    oa = _opposite(ta, shared.any(axis=2))  # (k, 2)
-    ob = _opposite(tb, shared.any(axis=1))
+def _one_shared_exact(v, ta, tb, shared, oa, ob):
+    """:func:`_one_shared` for the pairs the planes' signs do not decide (``oa``, ``ob``:
+    each triangle's two vertices but the shared one)."""
     hit = segments_hit_triangles(v[oa[:, 0]], v[oa[:, 1]], v[tb[:, 0]], v[tb[:, 1]],
                                  v[tb[:, 2]])
     hit |= segments_hit_triangles(v[ob[:, 0]], v[ob[:, 1]], v[ta[:, 0]], v[ta[:, 1]],
