@@ -259,7 +259,8 @@ def _one_curve(xl, th_l, xu, th_u, spans):
     in the plane of a body station), the two curves ran on from the two points to the body's
     end, and the body between them, a sliver as long as the fuselage behind the wing,
     belonged to neither block (it was capped flat: a held-out airplane's 44 ft cap, 0.02 ft
-    wide). Now the triangle between the two points and the next station is left to a cap."""
+    wide). Now the triangle between the two points and the next station is filled by one
+    side's seam (:func:`juncture.surface.seams.split_seams`) or capped."""
     k = np.minimum(np.searchsorted(xu, xl), xu.size - 1)
     same = _outside(xl, spans) & (xu[k] == xl)
     th_l = th_l.copy()

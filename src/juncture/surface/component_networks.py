@@ -18,6 +18,7 @@ fuselage in the split layout arrives here already continued to the plane of symm
 
 from __future__ import annotations
 
+import re
 import warnings
 
 import numpy as np
@@ -27,7 +28,7 @@ from ..intersect.body import side_label
 from ..intersect.winglike import wing_parameters
 
 __all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike",
-           "trace_curve", "add_trace_curves"]
+           "trace_curve", "add_trace_curves", "kept_roots"]
 
 
 def interpolated(wing, count):
@@ -139,6 +140,22 @@ def _end_line(wing, side, inters, at_root, log, hosts):
         log.append(msg)
         warnings.warn(msg, JunctureWarning, stacklevel=3)
     return pts, u
+
+
+#: The log line above for a root, read back by :func:`kept_roots` (kept beside the message).
+_KEPT_ROOT = re.compile(r"(.+?)/(.+?) (?:outboard|inboard|upper|lower)\b.*?: lofting line "
+                        r"(\d+) never meets the other components?; its input root point is kept")
+
+
+def kept_roots(log):
+    """{(component, what it stands on): {lofting lines (1-based)}} whose input root points
+    were kept, read from the ``log`` lines written above."""
+    kept = {}
+    for line in log:
+        got = _KEPT_ROOT.match(line)
+        if got:
+            kept.setdefault((got[1], got[2]), set()).add(int(got[3]))
+    return kept
 
 
 def _refuse_buried(wing, side, inters, pts, missed, hosts):

@@ -8,8 +8,6 @@ terms where it is known: :func:`overlapping_regions`), and re-triangulates it
 
 from __future__ import annotations
 
-import re
-
 import numpy as np
 
 from .assemble import assemble
@@ -149,22 +147,14 @@ def _crossing_surfaces(surface, report, most=3):
     return ["surfaces that cross: " + "; ".join(said) + more]
 
 
-#: The log line of a lofting line that keeps its input root point
-#: (juncture.surface.component_networks).
-_KEPT = re.compile(r"(.+?)/(.+?) (?:outboard|inboard|upper|lower)\b.*?: lofting line (\d+) "
-                   r"never meets the other components?; its input root point is kept")
-
-
 def _kept_roots(geometry, surface, report):
     """[one line per component whose root keeps input points, off what it stands on, and
     whose surfaces cross something] (the cause of those crossings, first), or []."""
+    from .component_networks import kept_roots
+
     if report.pairs is None or not len(report.pairs):
         return []
-    kept = {}
-    for line in getattr(geometry, "log", ()):
-        got = _KEPT.match(line)
-        if got:
-            kept.setdefault((got[1], got[2]), set()).add(int(got[3]))
+    kept = kept_roots(getattr(geometry, "log", ()))
     names = set(np.asarray(surface.surfaces)[surface.surface[report.pairs.ravel()]].tolist())
     out = []
     for (a, b), lines in kept.items():
