@@ -30,7 +30,8 @@ from .intersect import intersect_body_both
 from .misses import ended_lines, line_ends
 from .model import CircularBody, Configuration
 from .options import CompleteOptions, check_combination
-from .surface.networks import body_range, juncture_networks, split_counts
+from .surface.networks import (body_range, half_points, juncture_networks, refined_stations,
+                               split_counts)
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 
@@ -240,6 +241,8 @@ def _other_components(cfg, wing, body, opts, log, known=None):
         elif comp.name in pylons:
             mine = {comp.name: nacelle_network(comp, pylons[comp.name],
                                                n_points=36 * opts.refine + 1)}
+        elif isinstance(comp, CircularBody):
+            mine = comp.networks(stations=refined_stations(comp))
         else:
             mine = comp.networks()
             if plane is None and cfg.symmetric and not isinstance(comp, WingLike):
@@ -553,13 +556,14 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
                     "iterations": np.zeros(len(x))}
     for part in (iu, il, fu, fl):
         log.extend(part.log)
-    n_half = (getattr(body, "points_per_section", None) or (19,))[0]
+    n_half = half_points(body)
     completed = cfg.with_component(body) if body is not body0 else cfg
     other_nets, other_inters, attached, traces = _other_components(
         completed, wing, body, opts, log, known if keep_area and fillet is not None else None)
-    # The networks use the input body stations (plus the intersections'); a re-designed body
+    # The networks use the input body stations (plus the intersections'), and more where the
+    # body stands off the straight lines between them (refined_stations); a re-designed body
     # holds many more, only so that its area follows the compensation between them.
-    net_stations = body0.x_global
+    net_stations = refined_stations(body, body0.x_global)
     layout = opts.blocks
     if layout is None:
         layout = "split" if attached else 4

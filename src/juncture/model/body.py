@@ -472,8 +472,9 @@ class CircularBody:
             found <= fallback + 1e-6 * size)
         return np.where(good, found, fallback)
 
-    def cross_sections(self, n_points=None, theta=None):
-        """Body n-lines: (n_stations, n_points, 3) points at the input stations.
+    def cross_sections(self, n_points=None, theta=None, stations=None):
+        """Body n-lines: (n_stations, n_points, 3) points at the input stations (or at
+        ``stations``, global).
 
         Points run from theta = -pi/2 (bottom) to +pi/2 (top) on the y >= 0 side, which with
         the stations in increasing x gives outward normals. A pod (``mirrored`` or off the centre
@@ -484,20 +485,27 @@ class CircularBody:
             full = self.origin[1] != 0.0 or self.mirrored
             theta = np.linspace(-np.pi / 2, 3 * np.pi / 2 if full else np.pi / 2,
                                 2 * n - 1 if full else n)
-        xg = self.x_global
+        xg = self.x_global if stations is None else np.asarray(stations, float)
         return self.point(xg[:, None], np.asarray(theta, float)[None, :])
 
-    def networks(self, n_points=None):
+    def networks(self, n_points=None, stations=None):
         """Cross-section networks: ``{"<name>": ...}``, or ``"<name> segment k"`` per segment.
 
         Each segment uses ``n_points`` points per half-section if given, else its
-        ``points_per_section`` entry, else 19.
+        ``points_per_section`` entry, else 19; its rows are its own stations, or those of
+        ``stations`` (sorted, global, holding the body's own) from its first to its last.
         """
         counts = self.points_per_section or (None,) * len(self.segments)
+        xg = self.x_global
         out, start = {}, 0
         for i, (s, m) in enumerate(zip(self.segments, counts), 1):
             n = n_points if n_points is not None else (m or 19)
-            secs = self.cross_sections(n)[start:start + s]
+            rows = xg[start:start + s]
+            if stations is not None:
+                st = np.asarray(stations, float)
+                inner = st[(st > rows[0]) & (st < rows[-1])]
+                rows = np.sort(np.concatenate([rows, inner[~np.isin(inner, rows)]]))
+            secs = self.cross_sections(n, stations=rows)
             out[self.name if len(self.segments) == 1 else f"{self.name} segment {i}"] = secs
             start += s
         return out

@@ -242,8 +242,10 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         station); where a pylon sits, each runs from its inboard line round the bottom to
         its outboard line, ending exactly at the intersection points at their stations.
     """
+    from .networks import refined_stations
+
     n = int(n_points or 37)
-    xg = pod.x_global
+    xg = refined_stations(pod)
     spans, ends = [], []
     for out_i, in_i in pylon_inters:
         ok_o, ok_i = out_i.found, in_i.found

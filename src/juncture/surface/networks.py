@@ -26,7 +26,16 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["body_range", "split_counts", "arc_points", "arc_to", "orient", "radial_outward",
-           "juncture_networks", "layout_pieces", "ring"]
+           "juncture_networks", "layout_pieces", "ring", "refined_stations", "half_points",
+           "SAG"]
+
+#: A body's network rows are joined by straight lines; between two stations the body may stand
+#: off them (a nose or tail whose radius follows a cubic over a long interval, 2 ft off on a
+#: 64 ft tail cone). Stations are added until it stands off by at most this share of the
+#: body's largest radius (:func:`refined_stations`).
+SAG = 1e-3
+#: Halvings of one interval between input stations at most (63 added stations).
+HALVINGS = 6
 
 
 def body_range(body):
@@ -54,6 +63,48 @@ def split_counts(theta_w, n_points, bottom=-0.5 * np.pi, top=0.5 * np.pi):
         frac = 0.5
     n_below = int(np.clip(round(frac * (n_points - 1)) + 1, 2, n_points - 1))
     return n_below, n_points - n_below + 1
+
+
+def half_points(body):
+    """Points per half-section of a body's networks: the largest of its segments' counts (a
+    nose segment given 5 points and the middle one 11 is written with 11 all along: the
+    first count alone cut the middle's circle by 45 deg chords, 10 % of its area), else 19."""
+    return int(max(getattr(body, "points_per_section", None) or (19,)))
+
+
+def refined_stations(body, stations=None, sag=None):
+    """``stations`` (default the body's own) with stations added between consecutive ones,
+    by halving, where the body stands off the straight lines joining the two sections at the
+    same section parameter by more than ``sag`` times its largest radius (measured at a
+    quarter, half and three quarters of the interval, round the whole section). Repeated
+    joint stations stay; an interval is measured within itself (a step at a joint between
+    segments adds nothing). A body joined by straight lines along x (an arbitrary-section
+    body) gets none. ``sag`` defaults to :data:`SAG`."""
+    sag = SAG if sag is None else sag
+    x = np.asarray(body.x_global if stations is None else stations, float)
+    lo, hi, _ = body_range(body)
+    par = np.linspace(lo, hi, 9)
+    if hi - lo < 2.0:  # a circle: the other half too (a pod's centre off the plane)
+        par = np.linspace(-np.pi, np.pi, 17)[:-1]
+    tol = sag * float(np.sqrt(np.max(body.area_at(x)) / np.pi))
+    a, b = x[:-1][np.diff(x) > 0], x[1:][np.diff(x) > 0]
+    added = []
+    t = np.array([0.25, 0.5, 0.75])
+    for _ in range(HALVINGS):
+        if not a.size or not tol > 0:
+            break
+        h = b - a
+        ends = body.point(np.stack([a + 1e-9 * h, b - 1e-9 * h], -1)[..., None], par)
+        xm = a[:, None] + t * h[:, None]                                    # (k, 3)
+        chord = ends[:, None, 0] + t[None, :, None, None] * (ends[:, None, 1] - ends[:, None, 0])
+        off = np.linalg.norm(body.point(xm[..., None], par) - chord, axis=-1).max(axis=(1, 2))
+        split = off > tol
+        mid = 0.5 * (a + b)[split]
+        added.append(mid)
+        a, b = np.concatenate([a[split], mid]), np.concatenate([mid, b[split]])
+    if not added:
+        return x
+    return np.sort(np.concatenate([x] + added), kind="stable")
 
 
 def arc_points(body, x, theta_from, theta_to, n):
@@ -122,7 +173,7 @@ def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None):
     """
     u_end = np.concatenate([upper.u_end, lower.u_end])
     k_first = min(max(int(np.floor(np.nanmax(u_end))) + 1, 1), wing.n_sections - 1)
-    n_half = n_body_points or (getattr(body, "points_per_section", None) or (19,))[0]
+    n_half = n_body_points or half_points(body)
     bottom, top, _ = body_range(body)
     n_below, n_above = split_counts(float(upper.theta_start[0]), n_half, bottom, top)
     xu, xl = upper.start[:, 0], lower.start[:, 0]
