@@ -30,8 +30,13 @@ from .intersect import intersect_body_both
 from .misses import ended_lines, line_ends
 from .model import CircularBody, Configuration
 from .options import CompleteOptions, check_combination
-from .surface.networks import (body_range, half_points, juncture_networks, refined_stations,
-                               split_counts)
+from .surface.networks import (
+    body_range,
+    half_points,
+    juncture_networks,
+    refined_stations,
+    split_counts,
+)
 
 __all__ = ["complete", "CompleteOptions", "sharp_fillet"]
 
