@@ -455,3 +455,20 @@ def test_a_chord_two_patches_both_make_is_split(monkeypatch):
     monkeypatch.setattr(rm, "_split_shared_chords", lambda *args: None)
     first = remesh(assembled)
     assert check_mesh(*_arrays(first)).nonmanifold_edges > 0
+
+
+def test_a_chart_whose_triangles_overlap_inside_is_not_used():
+    """A generated airplane (tests/data/generated/README.md) whose pod's image flattens with
+    its boundary embedded but triangles overlapping inside (matplotlib's point locator
+    refuses such a chart). Such a chart was used, and the first point taken onto it raised
+    a TypeError ('NoneType' object is not callable); now the patch is charted another way
+    or keeps its triangles, every chart has its locator, and the surface passes every
+    check."""
+    from juncture.surface.patches import charts, patches
+
+    geo = _geo(DATA / "generated" / "remesh" / "pod_whose_chart_overlaps_inside.inp")
+    assembled = assemble(geo)
+    for rows in patches(assembled):
+        assert all(callable(p.find) for p in charts(assembled, rows) or ())
+    surface = jc.mesh(geo)
+    assert check_mesh(surface.vertices, surface.triangles).ok

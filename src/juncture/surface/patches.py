@@ -157,7 +157,7 @@ def chart(mesh, rows):
         chart = None if got is None else _flattened(mesh, used, *got)
         if chart is None:
             continue
-        tri, _, uv, _, cross, loops = chart
+        tri, _, uv, _, cross, loops, _ = chart
         if not cut and loops > 1 and spread(uv[tri], np.linalg.norm(cross, axis=1)) > SPREAD:
             annulus = chart           # a tube charted as an annulus: cut it open if it can be
             continue
@@ -166,9 +166,10 @@ def chart(mesh, rows):
 
 
 def _flattened(mesh, used, tri, parent):
-    """(tri, ids, uv, boundary edges, area vectors (twice), number of boundary loops) of a
-    chart of the local triangles ``tri`` over the vertices ``used[parent]``, or None (no
-    boundary, folded or crossing itself)."""
+    """(tri, ids, uv, boundary edges, area vectors (twice), number of boundary loops, point
+    locator) of a chart of the local triangles ``tri`` over the vertices ``used[parent]``,
+    or None (no boundary, folded or crossing itself: its boundary, or triangles inside that
+    the point locator finds overlapping)."""
     from .assemble import boundary_loops
 
     ids = used[parent]
@@ -179,16 +180,20 @@ def _flattened(mesh, used, tri, parent):
     edges = np.concatenate([np.stack([lp, np.roll(lp, -1)], 1) for lp in loops])
     if uv is None or not _embedded(uv, edges):
         return None
+    find = finder(uv, tri)
+    if find is None:
+        return None
     p = mesh.vertices[ids][tri]
-    return tri, ids, uv, edges, np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), len(loops)
+    return (tri, ids, uv, edges, np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), len(loops),
+            find)
 
 
-def _patch(mesh, rows, tri, ids, uv, edges, cross, _):
+def _patch(mesh, rows, tri, ids, uv, edges, cross, _, find):
     p = mesh.vertices[ids][tri]
     double = np.linalg.norm(cross, axis=1)
     return Patch(ids, tri, uv, edges, int(mesh.component[rows[0]]),
                   int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
-                  float(np.ptp(p.reshape(-1, 3), axis=0).max()), finder(uv, tri),
+                  float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
                   _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges),
                   spread=spread(uv[tri], double))
 
