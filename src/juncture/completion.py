@@ -285,6 +285,20 @@ def _ended(comp, body, inter, log):
                    found=np.ones(len(ends.points), bool))
 
 
+def _net_stations(body, body0, upper, lower):
+    """The body stations of the networks: the input body's (a re-designed body holds many
+    more, only so that its area follows the compensation between them), and more where the
+    body stands off the straight lines between them (refined_stations), outside the x range
+    of the wing's junction, whose rows are the fillet lines' (a row added between the
+    upper and lower lines' first points left the blocks there open)."""
+    given = body0.x_global
+    rows = refined_stations(body, given)
+    ends = np.concatenate([upper.start[:, 0], lower.start[:, 0]])
+    lo, hi = np.nanmin(ends), np.nanmax(ends)
+    added = rows[~np.isin(rows, given)]
+    return np.sort(np.concatenate([given, added[(added < lo) | (added > hi)]]), kind="stable")
+
+
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
     from .surface.body_split import boundary_from_points, seam_gap, split_body
@@ -565,10 +579,7 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     completed = cfg.with_component(body) if body is not body0 else cfg
     other_nets, other_inters, attached, traces = _other_components(
         completed, wing, body, opts, log, known if keep_area and fillet is not None else None)
-    # The networks use the input body stations (plus the intersections'), and more where the
-    # body stands off the straight lines between them (refined_stations); a re-designed body
-    # holds many more, only so that its area follows the compensation between them.
-    net_stations = refined_stations(body, body0.x_global)
+    net_stations = _net_stations(body, body0, fu, fl)
     layout = opts.blocks
     if layout is None:
         layout = "split" if attached else 4

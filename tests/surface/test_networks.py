@@ -105,3 +105,24 @@ def test_a_long_tail_cone_is_meshed_to_its_volume(name):
     surface = jc.mesh(geo)
     cells = union_volume(geo.configuration, n=121, cells=1500)
     assert abs(surface.volume() / cells - 1.0) < 5e-3
+
+
+def test_no_row_is_added_in_the_wing_junction_range():
+    """A generated airplane (tests/data/generated/README.md): an arbitrary-section fuselage
+    re-designed at fixed area (cubic fillet, keep_area) stands off the straight lines
+    between its input stations, so rows are added; one fell between the first points of
+    the upper and lower fillet start lines, and the blocks at the wing root's leading edge
+    were left open (14 open edges). Rows are added outside the junction's x range only
+    (there the fillet lines give the rows), and the surface closes."""
+    from juncture.surface.check import check_mesh
+
+    deck = DATA / "generated" / "assembly" / "arbitrary_body_keep_area_rows_at_the_wing_root.inp"
+    cfg = jc.read(deck)
+    geo = jc.complete(cfg, fillet="cubic", keep_area=True)
+    starts = np.concatenate([geo.fillets["fillet upper"][:, 0, 0],
+                             geo.fillets["fillet lower"][:, 0, 0]])
+    rows = np.unique(np.asarray(geo.networks["body upper"])[:, 0, 0])
+    added = rows[~np.isin(rows, cfg["body"].x_global) & ~np.isin(rows, starts)]
+    assert added.size and not np.any((added > starts.min()) & (added < starts.max()))
+    surface = jc.mesh(geo)
+    assert check_mesh(surface.vertices, surface.triangles).ok
