@@ -379,6 +379,10 @@ def _bent(patch, splits, vertices, pts, gid, local, shape):
         lifted, size = patch.lift(on, corners, patch.component, patch.surface), np.inf
     else:
         lifted, size = both(on, corners, patch.component, patch.surface)
+    # measured against where a new point there would go: near a free seam only part of the
+    # way (_lifted), or the gap between the ends, held there, and the full lift never shrank
+    # (a wing root's trailing edge next to its strip was split down to 1e-6 ft)
+    lifted = _tapered(patch, on, lifted, mid)
     sag = np.linalg.norm(lifted - 0.5 * (a + b), axis=1)
     h = np.linalg.norm(b - a, axis=1)
     size = np.broadcast_to(size, h.shape)
@@ -403,6 +407,12 @@ def _lifted(patch, points, under, query=None):
     lifted = patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
     if query is None or not len(points):
         return lifted
+    return _tapered(patch, points, lifted, query)
+
+
+def _tapered(patch, points, lifted, query):
+    """``points`` moved towards ``lifted`` in full, or near the patch's free boundary
+    (chart points ``query``) by the share :func:`_lifted` describes."""
     move = np.linalg.norm(lifted - points, axis=1)
     w = taper(patch, query, TAPER * move)
     return points + w[:, None] * (lifted - points)
