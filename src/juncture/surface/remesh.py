@@ -36,6 +36,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
+from .mirror import copies, copy_triangles, mirror_map, symmetrise
 from .patches import SHORTEST, SUPER, area3, charts, patches, taper
 from .splits import Splits, fans, seam_lift
 
@@ -43,6 +44,8 @@ __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 
 #: Default smallest angle [deg] the charts are refined to.
 MIN_ANGLE = 25.0
+#: Triangulate a patch with a mirror image once and copy it (:mod:`juncture.surface.mirror`).
+MIRROR = True
 #: Triangulation rounds; the last three do not refine (no new seam points).
 ROUNDS = 12
 #: Default largest distance of a triangle's centre from the surface, share of the size.
@@ -475,8 +478,10 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     from .assemble import SurfaceMesh
     from .strips import zipped
 
-    splits = Splits(np.asarray(mesh.vertices, float), seam_lift(mesh, lift))
+    splits = _splits(mesh, lift)
     charted, kept, strips = _sorted_patches(mesh, keep, lift, splits)
+    twins = {} if splits.mirror is None else copies(charted, splits.mirror, mesh.vertices)
+    work = [p for p in charted if p not in twins]
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
@@ -486,7 +491,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         # round taking what it gets
         refine = rnd < ROUNDS - 3
         rule = tol if refine else (None if rnd < ROUNDS - 1 else False)
-        for patch in charted:
+        for patch in work:
             known = _known(patch, splits)
             if patch.out is not None and patch.seen == known:
                 continue
@@ -498,7 +503,10 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
                                     "not be triangulated")
             patch.seen = known if done else -1
         if rnd < ROUNDS - 1:
-            _split_shared_chords(charted, splits, mesh.vertices)
+            _split_shared_chords(work, splits, mesh.vertices)
+    for copy, primary in twins.items():
+        if primary.out is not None:
+            copy.out, copy.seen = copy_triangles(primary, splits), _known(copy, splits)
     tris, comp, surf = [], [], []
     for patch in charted:
         if patch.out is None or patch.seen != _known(patch, splits):
@@ -513,8 +521,24 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         tris.append(t)
         comp.append(np.full(len(t), mesh.component[rows[0]]))
         surf.append(np.full(len(t), mesh.surface[rows[0]]))
+    if splits.mirror is not None:
+        symmetrise(splits)
     return SurfaceMesh(splits.all(), np.concatenate(tris), np.concatenate(comp),
                        np.concatenate(surf), mesh.components, mesh.surfaces, mesh.open_loops)
+
+
+def _splits(mesh, lift):
+    """The :class:`~juncture.surface.splits.Splits` of a re-triangulation: with both halves'
+    points matched (:mod:`juncture.surface.mirror`) where the surface has mirror images
+    and :data:`MIRROR` is on."""
+    vertices = np.asarray(mesh.vertices, float)
+    mirror = mirror_map(vertices) if MIRROR else None
+    if mirror is None or not np.any(mirror != np.arange(len(mirror))):
+        return Splits(vertices, seam_lift(mesh, lift))
+    t = np.asarray(mesh.triangles)
+    e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+    return Splits(vertices, seam_lift(mesh, lift), mirror,
+                  set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
 
 
 def _sorted_patches(mesh, keep, lift, splits):

@@ -23,13 +23,17 @@ class Splits:
     """The vertices, growing, and the points added on edges: one id per (edge, fraction),
     shared by every patch that has the edge."""
 
-    def __init__(self, vertices, move=None):
+    def __init__(self, vertices, move=None, mirror=None, edges=None):
         self._xyz = np.array(vertices, float)
         self.move = move                 # move(a, b, points): seam points onto the surface
         self.pending = []                # (a, b, id) of split points not yet moved
         self.n = len(vertices)
         self.on = {}                     # (a, b) with a < b -> {t: id}, t from a
         self._sorted = {}                # (a, b) -> (fractions, ids), sorted, as last asked
+        # the vertex at each one's mirror image (-1: none), and the input edges (a < b):
+        # a point split on an edge is split on its mirror image too (juncture.surface.mirror)
+        self.mirror = None if mirror is None else np.array(mirror, np.int64)
+        self.edges = edges
 
     def add_vertex(self, p):
         p = np.atleast_2d(p)
@@ -37,21 +41,46 @@ class Splits:
             grown = np.empty((2 * (self.n + len(p)), 3))
             grown[:self.n] = self._xyz[:self.n]
             self._xyz = grown
+            if self.mirror is not None:
+                self.mirror = np.concatenate([self.mirror,
+                                              np.full(len(grown) - len(self.mirror), -1)])
         ids = np.arange(self.n, self.n + len(p))
         self._xyz[ids] = p
+        if self.mirror is not None:
+            self.mirror[ids] = -1
         self.n += len(p)
         return ids
 
     def split(self, a, b, t):
+        new = self._split(a, b, t)
+        if self.mirror is None:
+            return
+        ma, mb = int(self.mirror[a]), int(self.mirror[b])
+        if ma < 0 or mb < 0:
+            return
+        if (ma, mb) == (a, b):          # an edge in the plane: the point is its own image
+            self.mirror[new] = new
+        elif (ma, mb) == (b, a):        # an edge across the plane: the point at 1 - t
+            other = self._split(a, b, 1.0 - t)
+            self.mirror[new], self.mirror[other] = other, new
+        elif (min(ma, mb), max(ma, mb)) in self.edges:
+            other = self._split(ma, mb, t)
+            self.mirror[new], self.mirror[other] = other, new
+
+    def _split(self, a, b, t):
+        """The id of the point at fraction t from a on edge (a, b), made if new."""
         if a > b:
             a, b, t = b, a, 1.0 - t
         got = self.on.setdefault((a, b), {})
         # Two patches that split one edge at its middle find fractions a few ulps apart.
-        if not any(abs(t - x) < SAME_T for x in got):
-            pa, pb = self._xyz[a], self._xyz[b]
-            got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
-            self._sorted.pop((a, b), None)
-            self.pending.append((a, b, got[t]))
+        for x, i in got.items():
+            if abs(t - x) < SAME_T:
+                return i
+        pa, pb = self._xyz[a], self._xyz[b]
+        got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
+        self._sorted.pop((a, b), None)
+        self.pending.append((a, b, got[t]))
+        return got[t]
 
     def settle(self):
         """Move the split points made since the last call onto the surface (``move``)."""

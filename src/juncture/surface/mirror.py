@@ -1,0 +1,85 @@
+"""Both halves of a symmetric surface re-triangulated once (:func:`juncture.surface.remesh`).
+
+A network and its image (``"<name> image"``, :meth:`juncture.geometry.Geometry.mirrored_networks`)
+carry mirror-image points bit for bit, but their charts were triangulated apart: ties in
+the Delaunay triangulation of a structured grid break differently in each half, so the two
+halves differed, refinement did twice the work, and a defect could show in one half only.
+Here every vertex is matched with the vertex at its mirror image in y = 0 (bit for bit), and
+a charted patch whose vertices and boundary edges are the mirror images of another's is
+that patch's copy: only the patch on the y > 0 side is triangulated, a point split on any
+edge is split on its mirror image too (:class:`juncture.surface.splits.Splits`), and the copy
+takes the mirror image of the triangles (corners reversed, so its normals point out).
+Patches that meet the plane of symmetry on both sides (a blunt base's cap) and those with no
+mirror image (a centre-line fin whose two sides differ) are triangulated on their own.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["mirror_map", "copies", "copy_triangles", "symmetrise", "FLIP"]
+
+#: The mirror image in y = 0.
+FLIP = np.array([1.0, -1.0, 1.0])
+
+
+def mirror_map(vertices):
+    """(n,) int: the vertex at each vertex's mirror image in y = 0 (bit for bit; itself on
+    the plane), or -1 where there is none."""
+    v = np.asarray(vertices, float)
+    n = len(v)
+    both = np.concatenate([v, v * FLIP]) + 0.0             # -0.0 is 0.0
+    _, first, inverse = np.unique(both, axis=0, return_index=True, return_inverse=True)
+    at = first[inverse.ravel()[n:]]
+    return np.where(at < n, at, -1)
+
+
+def copies(charted, mirror, vertices):
+    """{copy patch: primary patch} among the ``charted`` patches: pairs whose vertex sets
+    and boundary edges are mirror images of each other, the primary the one on the y > 0
+    side."""
+    def key(p, m=None):
+        ids = p.ids if m is None else m[p.ids]
+        return (tuple(np.unique(ids).tolist()), _rim(ids[p.tri]))
+
+    found = {key(p): p for p in charted}
+    out = {}
+    for p in charted:
+        if np.any(mirror[p.ids] < 0) or np.mean(vertices[p.ids, 1]) <= 0.0:
+            continue
+        q = found.get(key(p, mirror))
+        if q is not None and q is not p:
+            out[q] = p
+    return out
+
+
+def _rim(triangles):
+    """The edges (a < b) in one of ``triangles`` (global ids): the region's boundary, the
+    same whichever diagonals its quads have and wherever its chart was cut open."""
+    e = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]],
+                                triangles[:, [2, 0]]]), axis=1)
+    u, count = np.unique(e, axis=0, return_counts=True)
+    return tuple(map(tuple, u[count == 1].tolist()))
+
+
+def copy_triangles(primary, splits):
+    """The mirror image of ``primary.out`` (global ids) for its copy, corners reversed; a
+    vertex with no mirror yet (a point refinement put inside the primary) gets one, at its
+    mirror image."""
+    out = primary.out
+    ids = np.unique(out)
+    lone = ids[splits.mirror[ids] < 0]
+    if len(lone):
+        made = splits.add_vertex(splits.all()[lone] * FLIP)
+        splits.mirror[lone], splits.mirror[made] = made, lone
+    return splits.mirror[out][:, [0, 2, 1]]
+
+
+def symmetrise(splits):
+    """Put every vertex on the y < 0 side with a mirror on the y > 0 side at that vertex's
+    mirror image exactly (the split points of a copy were made from its own ends, and
+    lifted on their own: a few ulps apart)."""
+    xyz = splits.all()
+    m = splits.mirror[:splits.n]
+    src = np.flatnonzero((m >= 0) & (xyz[:, 1] > 0.0))
+    xyz[m[src]] = xyz[src] * FLIP
