@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["mirror_map", "copies", "copy_triangles", "symmetrise", "FLIP"]
+__all__ = ["mirror_map", "twins", "copy_triangles", "symmetrise", "FLIP"]
 
 #: The mirror image in y = 0.
 FLIP = np.array([1.0, -1.0, 1.0])
@@ -34,22 +34,25 @@ def mirror_map(vertices):
     return np.where(at < n, at, -1)
 
 
-def copies(charted, mirror, vertices):
-    """{copy patch: primary patch} among the ``charted`` patches: pairs whose vertex sets
-    and boundary edges are mirror images of each other, the primary the one on the y > 0
-    side."""
-    def key(p, m=None):
-        ids = p.ids if m is None else m[p.ids]
-        return (tuple(np.unique(ids).tolist()), _rim(ids[p.tri]))
+def twins(mesh, groups, mirror):
+    """{copy: primary} among the patches ``groups`` (rows of ``mesh.triangles``): pairs whose
+    vertices and rims are mirror images of each other, the primary the one on the y > 0
+    side (by its vertices' mean)."""
+    tri = np.asarray(mesh.triangles)
+    y = np.asarray(mesh.vertices, float)[:, 1]
 
-    found = {key(p): p for p in charted}
+    def key(t):
+        return tuple(np.unique(t).tolist()), _rim(t)
+
+    found = {key(tri[rows]): i for i, rows in enumerate(groups)}
     out = {}
-    for p in charted:
-        if np.any(mirror[p.ids] < 0) or np.mean(vertices[p.ids, 1]) <= 0.0:
+    for i, rows in enumerate(groups):
+        t = tri[rows]
+        if np.any(mirror[t] < 0) or np.mean(y[t]) <= 0.0:
             continue
-        q = found.get(key(p, mirror))
-        if q is not None and q is not p:
-            out[q] = p
+        j = found.get(key(mirror[t]))
+        if j is not None and j != i:
+            out[j] = i
     return out
 
 

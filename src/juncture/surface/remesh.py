@@ -36,7 +36,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
-from .mirror import copies, copy_triangles, mirror_map, symmetrise
+from .mirror import copy_triangles, mirror_map, symmetrise, twins
 from .patches import SHORTEST, SUPER, area3, charts, patches, taper
 from .splits import Splits, fans, seam_lift
 
@@ -479,9 +479,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     from .strips import zipped
 
     splits = _splits(mesh, lift)
-    charted, kept, strips = _sorted_patches(mesh, keep, lift, splits)
-    twins = {} if splits.mirror is None else copies(charted, splits.mirror, mesh.vertices)
-    work = [p for p in charted if p not in twins]
+    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
@@ -491,7 +489,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         # round taking what it gets
         refine = rnd < ROUNDS - 3
         rule = tol if refine else (None if rnd < ROUNDS - 1 else False)
-        for patch in work:
+        for patch in charted:
             known = _known(patch, splits)
             if patch.out is not None and patch.seen == known:
                 continue
@@ -503,10 +501,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
                                     "not be triangulated")
             patch.seen = known if done else -1
         if rnd < ROUNDS - 1:
-            _split_shared_chords(work, splits, mesh.vertices)
-    for copy, primary in twins.items():
-        if primary.out is not None:
-            copy.out, copy.seen = copy_triangles(primary, splits), _known(copy, splits)
+            _split_shared_chords(charted, splits, mesh.vertices)
     tris, comp, surf = [], [], []
     for patch in charted:
         if patch.out is None or patch.seen != _known(patch, splits):
@@ -516,6 +511,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
         comp.append(np.full(len(patch.out), patch.component))
         surf.append(np.full(len(patch.out), patch.surface))
     pieces = [(fans(mesh.triangles[rows], splits), rows) for rows in kept]
+    pieces += [(np.concatenate([copy_triangles(p, splits) for p in primary]), rows)
+               for rows, primary in copied]
     pieces += [(zipped(thin, splits), thin.rows) for thin in strips]
     for t, rows in pieces:
         tris.append(t)
@@ -542,13 +539,22 @@ def _splits(mesh, lift):
 
 
 def _sorted_patches(mesh, keep, lift, splits):
-    """(charted patches, kept triangle rows, strips): a thin cap is a strip
+    """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now); a patch in ``keep``
-    or one that cannot be charted keeps its triangles."""
+    or one that cannot be charted keeps its triangles; the mirror image of a patch charted
+    whole (:func:`juncture.surface.mirror.twins`) is (its rows, that patch's charts), and
+    takes their triangles mirrored at the end."""
     from .strips import presplit, strip, tip_and_strip
 
-    charted, kept, strips = [], [], []
-    for rows in patches(mesh):
+    charted, kept, strips, copied = [], [], [], []
+    groups = patches(mesh)
+    twin = {} if splits.mirror is None else twins(mesh, groups, splits.mirror)
+    whole = {}                          # primary: its charts, where it is charted whole
+    for i in [i for i in range(len(groups)) if i not in twin] + list(twin):
+        rows = groups[i]
+        if whole.get(twin.get(i)):
+            copied.append((rows, whole[twin[i]]))
+            continue
         held = mesh.surface[rows[0]] in keep
         thin = None if held else strip(mesh, rows)
         if thin is not None:
@@ -563,11 +569,13 @@ def _sorted_patches(mesh, keep, lift, splits):
         got = None if held else charts(mesh, rows)
         if got is None:
             kept.append(rows)
+        elif parts is None:
+            whole[i] = got
         for patch in got or ():
             patch.lift = lift
             charted.append(patch)
     _mark_free(charted, splits)
-    return charted, kept, strips
+    return charted, kept, strips, copied
 
 
 def _mark_free(charted, splits):
