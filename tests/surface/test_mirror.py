@@ -92,3 +92,58 @@ def test_copying_the_image_halves_the_triangulations(monkeypatch):
     names = [surface.surfaces[s] for s in set(calls)]
     assert any(n.endswith(" image") for n in names)
     assert matched < 0.6 * len(calls)
+
+
+def _dented(surface, vertex, depth, both):
+    """``surface``'s vertices with ``vertex`` pushed down by ``depth`` times the surface's
+    size (and its mirror image with it, with ``both``)."""
+    v = np.array(surface.vertices, float)
+    m = mirror_map(v)
+    push = np.array([0.0, 0.0, -depth * np.ptp(v, axis=0).max()])
+    v[vertex] += push
+    if both and m[vertex] != vertex:
+        v[m[vertex]] += push
+    return v
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.integers(0, 2**31), st.booleans(), st.floats(0.02, 0.05))
+def test_the_mirrored_search_finds_every_crossing_pair(seed, both, depth):
+    """Hypothesis: a wing-body meshed with both halves matched; a vertex of the wing's upper
+    surface where it is thickest (on the y < 0 side alone, or on the y > 0 side with its
+    mirror image) pushed down through the lower one. The crossing pairs the search on the y >= 0 side
+    finds, with their images, are those the search of every pair finds
+    (check.MIRROR_SHARE < 0 searches every pair), and there are some."""
+    import juncture.surface.check as ck
+    from tests.support import wing_body
+
+    surface = _mesh_of(wing_body(z_root=-1.0))
+    name = "wing-body upper" if both else "wing-body upper image"
+    rows = surface.surface == surface.surfaces.index(name)
+    ids = np.unique(surface.triangles[rows])
+    inner = ids[np.abs(surface.vertices[ids, 1]) > 6.0]  # out on the wing
+    thick = inner[np.argsort(surface.vertices[inner, 2])[-20:]]   # where it is thickest
+    vertex = int(np.random.default_rng(seed).choice(thick))
+    v = _dented(surface, vertex, depth, both)
+    found = ck.self_intersections(v, surface.triangles)
+    old = ck.MIRROR_SHARE
+    ck.MIRROR_SHARE = -1.0
+    try:
+        every = ck.self_intersections(v, surface.triangles)
+    finally:
+        ck.MIRROR_SHARE = old
+    assert len(every)
+    assert np.array_equal(np.unique(np.sort(found, 1), axis=0),
+                          np.unique(np.sort(every, 1), axis=0))
+
+
+_MESHES = {}
+
+
+def _mesh_of(cfg):
+    """jc.mesh of ``cfg``, made once per title."""
+    if cfg.title not in _MESHES:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            _MESHES[cfg.title] = jc.mesh(jc.complete(cfg))
+    return _MESHES[cfg.title]

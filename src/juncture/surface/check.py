@@ -212,13 +212,56 @@ PAIR_BLOCK = 1 << 20
 
 
 def self_intersections(vertices, triangles):
-    """(k, 2) triangle pairs that intersect (exact predicates; see the module)."""
+    """(k, 2) triangle pairs that intersect (exact predicates; see the module).
+
+    Where the surface is its own mirror image in y = 0 but for a few triangles
+    (:func:`juncture.surface.mirror.triangle_mirror`; both halves are triangulated once),
+    only the pairs with a point at y >= 0 are searched, and those found are given with
+    their images: a triangle holding a point at y >= 0 has a corner there, so such a pair
+    lies among the mirrored triangles with a corner at y >= 0 and the ones with no image
+    (a blunt base's cap across the plane); a pair meeting at y < 0 is the image of one
+    meeting at y > 0, unless one of its triangles has no image: those are searched against
+    the triangles wholly at y < 0 too."""
+    from .mirror import triangle_mirror
+
     v, tri = np.asarray(vertices, float), np.asarray(triangles, np.int64)
-    pairs = _candidate_pairs(v, tri)
+    image = triangle_mirror(v, tri)
+    lone = image < 0
+    if not len(tri) or lone.mean() > MIRROR_SHARE:
+        return _search(v, tri, _candidate_pairs(v, tri))
+    upper = ~lone & np.any(v[tri][:, :, 1] >= 0.0, axis=1)
+    sub = np.flatnonzero(upper | lone)
+    pairs = np.concatenate([sub[_candidate_pairs(v, tri[sub])],
+                            _box_pairs(v, tri, np.flatnonzero(lone),
+                                       np.flatnonzero(~upper & ~lone))])
+    found = _search(v, tri, pairs)
+    both = found[np.all(image[found] >= 0, axis=1)]
+    return np.unique(np.sort(np.concatenate([found, image[both]]), axis=1), axis=0)
+
+
+#: A surface with more than this share of its triangles without a mirror image is searched
+#: whole (see :func:`self_intersections`).
+MIRROR_SHARE = 0.05
+
+
+def _search(v, tri, pairs):
+    """The candidate ``pairs`` that intersect, in blocks of :data:`PAIR_BLOCK`."""
     if len(pairs) <= PAIR_BLOCK:
         return _intersecting(v, tri, pairs)
     return np.concatenate([_intersecting(v, tri, pairs[i:i + PAIR_BLOCK])
                            for i in range(0, len(pairs), PAIR_BLOCK)])
+
+
+def _box_pairs(v, tri, few, many):
+    """Pairs (i < j) of a triangle of ``few`` and one of ``many`` whose boxes overlap."""
+    if not len(few) or not len(many):
+        return np.zeros((0, 2), np.int64)
+    p = v[tri]
+    lo, hi = p.min(axis=1), p.max(axis=1)
+    hit = np.all((lo[few, None] <= hi[None, many]) & (lo[None, many] <= hi[few, None]),
+                 axis=2)
+    a, b = few[np.nonzero(hit)[0]], many[np.nonzero(hit)[1]]
+    return np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1)
 
 
 def _intersecting(v, tri, pairs):

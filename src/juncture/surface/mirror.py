@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["mirror_map", "twins", "copy_triangles", "symmetrise", "FLIP"]
+__all__ = ["mirror_map", "twins", "copy_triangles", "symmetrise", "triangle_mirror", "FLIP"]
 
 #: The mirror image in y = 0.
 FLIP = np.array([1.0, -1.0, 1.0])
@@ -86,3 +86,25 @@ def symmetrise(splits):
     m = splits.mirror[:splits.n]
     src = np.flatnonzero((m >= 0) & (xyz[:, 1] > 0.0))
     xyz[m[src]] = xyz[src] * FLIP
+
+
+def triangle_mirror(vertices, triangles):
+    """(m,) int: the triangle whose corners are each triangle's corners' mirror images in
+    y = 0 (bit for bit), or -1 where there is none."""
+    m = mirror_map(vertices)
+    t = np.asarray(triangles, np.int64)
+    out = np.full(len(t), -1, np.int64)
+    ok = np.all(m[t] >= 0, axis=1) if len(t) else np.zeros(0, bool)
+    if not ok.any():
+        return out
+    n = len(m)
+    key = np.sort(t, axis=1) @ np.array([n * n, n, 1], np.int64) if n < 2**20 else None
+    if key is None:                     # too many vertices for one integer key
+        return out
+    image = np.sort(m[t[ok]], axis=1) @ np.array([n * n, n, 1], np.int64)
+    order = np.argsort(key, kind="stable")
+    at = np.searchsorted(key[order], image)
+    at = np.minimum(at, len(t) - 1)
+    hit = key[order][at] == image
+    out[np.flatnonzero(ok)[hit]] = order[at[hit]]
+    return out
