@@ -111,8 +111,8 @@ def _dented(surface, vertex, depth, both):
 def test_the_mirrored_search_finds_every_crossing_pair(seed, both, depth):
     """Hypothesis: a wing-body meshed with both halves matched; a vertex of the wing's upper
     surface where it is thickest (on the y < 0 side alone, or on the y > 0 side with its
-    mirror image) pushed down through the lower one. The crossing pairs the search on the y >= 0 side
-    finds, with their images, are those the search of every pair finds
+    mirror image) pushed down through the lower one. The crossing pairs the search on the
+    y >= 0 side finds, with their images, are those the search of every pair finds
     (check.MIRROR_SHARE < 0 searches every pair), and there are some."""
     import juncture.surface.check as ck
     from tests.support import wing_body
