@@ -7,6 +7,7 @@
 ``assemble``                one triangulated surface of every network, both halves
 ``seams``, ``imprint``      seams whose sides differ; footprints cut into their hosts
 ``chart``, ``remesh``       conformal charts; re-triangulation for angles, seams kept shared
+``mirror``                  both halves triangulated once: a surface's image copies it
 ``pipeline``                ``juncture.mesh``: assemble, check, re-triangulate
 ``quality``, ``check``      closed, manifold, oriented, no crossing; volume, wetted area, angles
 ``write``                   STL, Gmsh, VTU with component ids
