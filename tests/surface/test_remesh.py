@@ -235,10 +235,15 @@ def test_surfaces_that_cross_when_re_triangulated_keep_their_own_triangles(monke
     refinement points, FLAT3D = 0, and without splitting a chart whose scale varies too much,
     patches.SPLITS = 0, it still does): re-triangulated once more with that pod's triangles
     kept, the airplane passes every check and keeps good angles elsewhere. With the drop,
-    the first re-triangulation passes."""
+    the first re-triangulation passes. (The crossing needs the pod's network at its own
+    stations and the image half triangulated apart, as when this airplane was found:
+    networks.SAG and remesh.MIRROR off.)"""
+    import juncture.surface.networks as nw
     import juncture.surface.patches as pa
     import juncture.surface.remesh as rm
 
+    monkeypatch.setattr(nw, "SAG", np.inf)
+    monkeypatch.setattr(rm, "MIRROR", False)
     assembled = assemble(_geo(DATA / "generated" / "remesh"
                               / "pod_tip_crossing_when_re_triangulated.inp"))
     assert check_mesh(*_arrays(remesh(assembled))).ok
@@ -258,9 +263,12 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monk
     across each patch between two of its boundary points: such edges are now split
     (remesh.CHORD, and since 2026-11-27 remesh._split_shared_chords too) and the first
     re-triangulation passes every check. Without either split, the surfaces that make the
-    triangle are kept as assembled, and the airplane passes."""
+    triangle are kept as assembled, and the airplane passes. (The fuselage's network is
+    made at its own stations, as when this airplane was found: networks.SAG off.)"""
+    import juncture.surface.networks as nw
     import juncture.surface.remesh as rm
 
+    monkeypatch.setattr(nw, "SAG", np.inf)
     geo = _geo(DATA / "generated" / "remesh" / "fillet_corner_shared_when_re_triangulated.inp",
                fillet="cubic", keep_area=True)
     assembled = assemble(geo)
