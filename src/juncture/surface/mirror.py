@@ -5,10 +5,11 @@ carry mirror-image points bit for bit, but their charts were triangulated apart:
 the Delaunay triangulation of a structured grid break differently in each half, so the two
 halves differed, refinement did twice the work, and a defect could show in one half only.
 Here every vertex is matched with the vertex at its mirror image in y = 0 (bit for bit), and
-a charted patch whose vertices and boundary edges are the mirror images of another's is
-that patch's copy: only the patch on the y > 0 side is triangulated, a point split on any
-edge is split on its mirror image too (:class:`juncture.surface.splits.Splits`), and the copy
-takes the mirror image of the triangles (corners reversed, so its normals point out).
+a patch (a connected part of one surface) whose vertices and rim are the mirror images of
+another's is that patch's copy: only the patch on the y > 0 side is charted and
+triangulated, a point split on any edge is split on its mirror image too
+(:class:`juncture.surface.splits.Splits`), and the copy takes the mirror image of the
+triangles (corners reversed, so its normals point out).
 Patches that meet the plane of symmetry on both sides (a blunt base's cap) and those with no
 mirror image (a centre-line fin whose two sides differ) are triangulated on their own.
 """
@@ -92,16 +93,15 @@ def triangle_mirror(vertices, triangles):
     """(m,) int: the triangle whose corners are each triangle's corners' mirror images in
     y = 0 (bit for bit), or -1 where there is none."""
     m = mirror_map(vertices)
-    t = np.asarray(triangles, np.int64)
+    t = np.asarray(triangles, np.int64).reshape(-1, 3)
     out = np.full(len(t), -1, np.int64)
-    ok = np.all(m[t] >= 0, axis=1) if len(t) else np.zeros(0, bool)
-    if not ok.any():
-        return out
     n = len(m)
-    key = np.sort(t, axis=1) @ np.array([n * n, n, 1], np.int64) if n < 2**20 else None
-    if key is None:                     # too many vertices for one integer key
+    ok = np.all(m[t] >= 0, axis=1)
+    if not ok.any() or n >= 2**20:      # (three ids in one int64 key up to 2**21 vertices)
         return out
-    image = np.sort(m[t[ok]], axis=1) @ np.array([n * n, n, 1], np.int64)
+    weight = np.array([n * n, n, 1], np.int64)
+    key = np.sort(t, axis=1) @ weight
+    image = np.sort(m[t[ok]], axis=1) @ weight
     order = np.argsort(key, kind="stable")
     at = np.searchsorted(key[order], image)
     at = np.minimum(at, len(t) - 1)
