@@ -82,3 +82,19 @@ def test_the_transports_junctions_lie_apart():
     twice.update({k.replace("fin 3/", "fin 9/"): v for k, v in fin.items()})
     with pytest.raises(jc.GeometryError, match="fin"):
         refuse_crossing_regions(geo.configuration, twice)
+
+
+def test_a_fin_trailing_edge_on_a_tail_root_is_refused_and_the_oracle_agrees():
+    """A generated airplane (tests/data/generated/README.md) whose twin fin's trailing edge
+    ends on the tail's upper root line (24.56 deg round the fuselage, the line at 25.14 deg
+    there between its points taken linearly, 24.556 deg along its 3-D chord): juncture
+    refuses the pair by name, and the test oracle (tests.support.junctions_overlap), which
+    took the chord only and found them 0.004 deg apart, now takes the line either way."""
+    from tests.support import junctions_overlap
+
+    cfg = jc.read(DATA / "generated" / "crossings" / "fin_trailing_edge_on_a_tail_root.inp")
+    with pytest.raises(jc.GeometryError, match="tail 1: its junction with body .* fin 2"):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            jc.complete(cfg)
+    assert junctions_overlap(cfg, "tail 1", "fin 2", "body")
