@@ -107,3 +107,30 @@ def test_a_chain_far_off_the_edge_between_two_shared_points_stays_open():
     pts, tri, comp = _two_sides(np.array([0.0, 2.2]), fine)
     out, _ = split_seams(pts, tri, comp)
     assert _seam_open_edges(pts, out) == _seam_open_edges(pts, tri) > 0
+
+
+def _edge_and_point(point):
+    """Component 0: a triangle whose boundary edge A -> B runs 20 ft along y (a wing's upper
+    trailing edge); component 1: a triangle with the corner ``point`` beside it (a body
+    triangle at the wing's lower trailing edge) sharing A."""
+    pts = np.array([[0.0, 0.0, 0.0], [0.0, 20.0, 0.0], [-1.0, 10.0, 0.0], point,
+                    [3.0, -2.0, -1.0]])
+    tri = np.array([[0, 1, 2], [3, 0, 4]])
+    return pts, tri, np.array([0, 1])
+
+
+def test_the_lens_about_an_edge_narrows_to_its_ends():
+    """The lens about an edge narrows to its ends (seams.END): the lower trailing-edge point
+    where a body cuts a blunt trailing edge, 0.066 ft off the 20 ft upper trailing edge at
+    0.15 % of its length, was taken into it and folded the strip between them to a point at
+    the root (hundreds of slivers in the zipped strip). Points 3 % of the edge off it at its
+    middle and at a tenth of its length (a fillet's line bending off a wing's root) are
+    taken."""
+    for point in ([0.02, 0.03, -0.063], [0.0, 0.2, -0.1]):
+        pts, tri, comp = _edge_and_point(point)
+        out, _ = split_seams(pts, tri, comp)
+        assert len(out) == len(tri)
+    for y in (10.0, 2.0):
+        pts, tri, comp = _edge_and_point([0.02, y, -0.6])
+        out, _ = split_seams(pts, tri, comp)
+        assert len(out) == len(tri) + 1 and (out == 3).sum() == 3

@@ -153,13 +153,17 @@ def test_a_tip_and_strip_cap_is_charted_and_zipped_apart():
 def test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch):
     """A generated wing of two sections (tests/data/generated/README.md) with a wedge of a
     trailing edge, 0.017 ft thick at the tip and closed at the root: its surfaces grade down
-    to the strip's pieces (remesh.FINEST); at FINEST = 1e-3 of the charts' median edge (the
-    span) they fanned them (1,917 triangles under 5 deg outside the caps, 99 now: at the
-    root, where the wing runs over the fuselage's top to the plane of symmetry)."""
+    to the strip's pieces (remesh.FINEST), and the strip is graded from its width at the
+    corners its sides share measured to the other side without that corner
+    (strips._corner_width): measured to the corner itself it is 0 there, the side was split
+    ever finer towards it and its pieces fanned against the other side's (94 triangles under
+    5 deg; none now). At FINEST = 1e-3 of the charts' median edge (the span) as well, the
+    wing's surfaces fanned the strip's pieces too (1,890)."""
     import warnings
 
     import juncture as jc
     import juncture.surface.remesh as rm
+    import juncture.surface.strips as st
     from juncture.surface.quality import triangle_angles
     from tests.support import DATA
 
@@ -168,13 +172,46 @@ def test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch):
         warnings.simplefilter("ignore", jc.JunctureWarning)
         geo = jc.complete(jc.read(deck))
 
-    def slivers():
-        """Triangles under 5 deg outside the caps."""
+    def slivers(caps=True):
+        """Triangles under 5 deg (outside the caps unless ``caps``)."""
         surface = jc.mesh(geo)
         smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
         cap = np.char.endswith(np.array(surface.surfaces)[surface.surface].astype(str), " cap")
-        return int(np.sum((smallest < 5.0) & ~cap))
+        return int(np.sum((smallest < 5.0) & (caps | ~cap)))
 
-    assert slivers() < 150
+    assert slivers() == 0
+    monkeypatch.setattr(st, "_corner_width", lambda vertices, side, other: (0.0, 0.0))
+    assert slivers() > 50
     monkeypatch.setattr(rm, "FINEST", 1e-3)
-    assert slivers() > 1000
+    assert slivers(caps=False) > 1000
+
+
+def test_a_blunt_trailing_edge_cut_by_the_body_keeps_its_root_edge(monkeypatch):
+    """A wing's blunt trailing edge cut by a flat panel of an octagonal fuselage
+    (tests/data/generated/README.md): the strip closing it ends in the edge across it where
+    the body cuts it (its root rung), so it is as wide at the root as the deck makes it, and
+    no triangle anywhere is under 5 deg. With the old straight lens the body's point at the
+    lower trailing edge's root was taken into the upper trailing edge, the strip narrowed to
+    it and was split ever finer towards it (slivers down to 0.1 deg)."""
+    import warnings
+
+    import juncture as jc
+    import juncture.surface.seams as seams
+    from juncture.surface.quality import triangle_angles
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "remesh" / "blunt_trailing_edge_cut_by_a_polygon_body.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck))
+    upper, lower = (np.asarray(geo.networks[f"wing {s}"]) for s in ("upper", "lower"))
+    root = (upper[0, -1], lower[-1, -1])               # the trailing edge's root points
+    assert np.linalg.norm(root[0] - root[1]) > 0.06
+
+    def smallest():
+        surface = jc.mesh(geo)
+        return triangle_angles(surface.vertices, surface.triangles).min()
+
+    assert smallest() >= 5.0
+    monkeypatch.setattr(seams, "END", np.inf)   # the lens as wide at its ends as between
+    assert smallest() < 1.0

@@ -28,6 +28,14 @@ __all__ = ["LENS", "COLLINEAR", "split_seams"]
 #: of the edge's length (the seam's chord-to-curve sag; a gap between surfaces is wider).
 LENS = 0.05
 
+#: Towards its ends the lens narrows to END times the distance along the edge (a point seen
+#: from an end at most atan(END) = 22 deg off the edge; a curve of sag LENS through both
+#: ends leaves them at 4 LENS = 0.2, 11 deg): the point where a body cuts the lower side of a
+#: blunt trailing edge lies 0.3 % of the 21 ft upper trailing edge off it, but across the
+#: edge from its end (34-90 deg), and is no point of that seam; a fillet's line bending off
+#: a wing's root 14 deg from its end is.
+END = 0.4
+
 #: The lens for a point of the edge's own component: on the edge, to round-off.
 COLLINEAR = 1e-9
 
@@ -49,8 +57,9 @@ def _boundary_edges(triangles):
     return e[open_], owner[open_]
 
 
-def _between(p, a, b, lens):
-    """(mask, t, off): which points p (k, 3) lie strictly between a and b within the lens,
+def _between(p, a, b, lens, end=None):
+    """(mask, t, off): which points p (k, 3) lie strictly between a and b within the lens
+    (``lens`` of the edge's length off it, narrowing to its ends: ``end``, :data:`END`),
     their parameter along a -> b and their distance from it as a share of its length."""
     d = b - a
     length2 = float(d @ d)
@@ -58,7 +67,9 @@ def _between(p, a, b, lens):
         return np.zeros(len(p), bool), np.zeros(len(p)), np.full(len(p), np.inf)
     t = (p - a) @ d / length2
     off = np.linalg.norm(p - a - t[:, None] * d, axis=1) / np.sqrt(length2)
-    return (t > 1e-9) & (t < 1.0 - 1e-9) & (off <= lens), t, off
+    end = END if end is None else end
+    width = lens if np.isinf(end) else np.minimum(lens, end * np.minimum(t, 1.0 - t))
+    return (t > 1e-9) & (t < 1.0 - 1e-9) & (off <= width), t, off
 
 
 def _fan(tri, a, b, inserted):
@@ -187,7 +198,7 @@ def _wide_chains(vertices, edges, owner, component, touch, links, per_edge, take
         chain = _other_chain(a, b, mine, touch, links)
         if not chain or taken.intersection(chain):
             continue
-        near, _, _ = _between(vertices[chain], vertices[a], vertices[b], WIDE)
+        near, _, _ = _between(vertices[chain], vertices[a], vertices[b], WIDE, np.inf)
         if near.all():
             out.append((e, chain))
             taken.update(chain)

@@ -103,10 +103,19 @@ def presplit(s, vertices, splits):
     for side, other in ((s.a, s.b), (s.b, s.a)):
         p, q = vertices[side[:-1]], vertices[side[1:]]
         w0, w1 = _distance(p, vertices[other]), _distance(q, vertices[other])
+        w0[0], w1[-1] = _corner_width(vertices, side, other)
         length = np.linalg.norm(q - p, axis=1)
         for i, j, ln, a, b in zip(side[:-1].tolist(), side[1:].tolist(), length, w0, w1):
             for t in _graded(ln, a, b):
                 splits.split(i, j, float(t))
+
+
+def _corner_width(vertices, side, other):
+    """The strip's width at the two corners its sides share: the distance from each to the
+    other side without that corner (its rung, where the strip ends in an edge across it: a
+    trailing edge cut by the fuselage; the other side's first edge, where it pinches)."""
+    return (float(_distance(vertices[side[:1]], vertices[other[1:]])[0]),
+            float(_distance(vertices[side[-1:]], vertices[other[:-1]])[0]))
 
 
 def _graded(length, w0, w1):
