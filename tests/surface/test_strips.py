@@ -8,7 +8,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from juncture.surface.assemble import _zip_chains, zip_strip
-from juncture.surface.strips import MOST, NARROWEST, SPACING, _graded
+from juncture.surface.strips import MOST, NARROWEST, _graded, spacing
+
+SPACING = spacing(25.0)
 
 
 @settings(max_examples=200, deadline=None)
@@ -17,7 +19,7 @@ def test_graded_pieces_are_at_most_spacing_times_the_width_where_they_start(leng
     """Every piece of the edge is no longer than SPACING times the strip's width at the
     piece's narrow end (linear between the edge's ends; no narrower than NARROWEST of the
     widest), unless the edge takes more than MOST pieces."""
-    t = np.concatenate([[0.0], _graded(length, w0, w1), [1.0]])
+    t = np.concatenate([[0.0], _graded(length, w0, w1, SPACING), [1.0]])
     assert np.all(np.diff(t) > 0.0)
     if len(t) - 1 >= MOST:
         return
@@ -27,8 +29,8 @@ def test_graded_pieces_are_at_most_spacing_times_the_width_where_they_start(leng
 
 
 def test_graded_is_the_same_edge_from_either_end():
-    a = _graded(10.0, 0.05, 0.4)
-    b = _graded(10.0, 0.4, 0.05)
+    a = _graded(10.0, 0.05, 0.4, SPACING)
+    b = _graded(10.0, 0.4, 0.05, SPACING)
     np.testing.assert_allclose(np.sort(1.0 - a), b, atol=1e-15)
 
 

@@ -490,7 +490,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     from .strips import zipped
 
     splits = _splits(mesh, lift)
-    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits)
+    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
@@ -549,9 +549,10 @@ def _splits(mesh, lift):
                   set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
 
 
-def _sorted_patches(mesh, keep, lift, splits):
+def _sorted_patches(mesh, keep, lift, splits, min_angle):
     """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
-    (:mod:`juncture.surface.strips`, its sides split in ``splits`` now); a patch in ``keep``
+    (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
+    about ``min_angle``); a patch in ``keep``
     or one that cannot be charted keeps its triangles; the mirror image of a patch charted
     whole (:func:`juncture.surface.mirror.twins`) is (its rows, that patch's charts), and
     takes their triangles mirrored at the end."""
@@ -570,13 +571,13 @@ def _sorted_patches(mesh, keep, lift, splits):
         thin = None if held else strip(mesh, rows)
         if thin is not None:
             strips.append(thin)
-            presplit(thin, mesh.vertices, splits)
+            presplit(thin, mesh.vertices, splits, min_angle)
             continue
         parts = None if held else tip_and_strip(mesh, rows)
         if parts is not None:           # the strip zipped, the tip charted
             rows, thin = parts
             strips.append(thin)
-            presplit(thin, mesh.vertices, splits)
+            presplit(thin, mesh.vertices, splits, min_angle)
         got = None if held else charts(mesh, rows)
         if got is None:
             kept.append(rows)

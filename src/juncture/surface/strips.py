@@ -7,10 +7,11 @@ where it pinches to nothing (a trailing edge that meets the fuselage at a point)
 refinement runs on towards the corner and pushes ever shorter pieces onto the wing's seams;
 zipped as it is, its triangles are as thin as its width is short against the networks'
 spacing. So a strip is not charted: its long sides are split once, before the rounds, into
-pieces of at most :data:`SPACING` times its width there (shared with the wing surfaces
+pieces of at most :func:`spacing` times its width there (shared with the wing surfaces
 across them, which refine to that spacing), and at the end it is zipped again over every
 point on its sides. A zipped triangle of width h and base b has a smallest angle of about
-atan(h / b): 9.5 deg at b = 6 h.
+atan(h / b): the spacing follows the smallest angle asked of the charts (20 deg at b = 2.7 h
+for the default 25).
 """
 
 from __future__ import annotations
@@ -21,17 +22,19 @@ import numpy as np
 
 from .assemble import boundary_loops, equal_run, strip_chains, zip_strip
 
-__all__ = ["Strip", "strip", "tip_and_strip", "presplit", "zipped", "STRIP", "SPACING", "MOST"]
+__all__ = ["Strip", "strip", "tip_and_strip", "presplit", "zipped", "spacing", "STRIP", "MOST"]
 
 #: A cap patch is a strip when its area is below this share of a circle's of its boundary's
 #: length (a rectangle narrower than about STRIP / pi of its length).
 STRIP = 0.05
-#: A strip's sides are split into pieces of at most this many times its local width ...
-SPACING = 6.0
+#: A strip's sides are split into pieces of at most :func:`spacing` times its local width:
+#: 1 / tan(SHARE * min_angle), 2.7 at the default smallest angle of 25 deg (a zipped
+#: triangle of width h and base b has a smallest angle of about atan(h / b): 20 deg) ...
+SHARE = 0.8
 #: ... but no finer than that times this share of its widest (where it pinches to a point
 #: no spacing helps the triangle at the corner), and each edge into at most :data:`MOST`.
 NARROWEST = 0.1
-MOST = 1000
+MOST = 4000
 
 
 class Strip(NamedTuple):
@@ -96,9 +99,15 @@ def _distance(points, chain):
     return np.linalg.norm(points[:, None] - a - t[..., None] * d, axis=2).min(axis=1)
 
 
-def presplit(s, vertices, splits):
+def spacing(min_angle):
+    """The longest piece of a strip's side, in widths, for triangles of about
+    ``SHARE * min_angle`` [deg] (:data:`SHARE`)."""
+    return 1.0 / np.tan(np.radians(SHARE * min_angle))
+
+
+def presplit(s, vertices, splits, min_angle):
     """Split each side's edges of the strip ``s`` (in ``splits``, shared with the surface
-    across) into pieces of at most :data:`SPACING` times the width where each starts
+    across) into pieces of at most :func:`spacing` times the width where each starts
     (:func:`_graded`)."""
     for side, other in ((s.a, s.b), (s.b, s.a)):
         p, q = vertices[side[:-1]], vertices[side[1:]]
@@ -106,7 +115,7 @@ def presplit(s, vertices, splits):
         w0[0], w1[-1] = _corner_width(vertices, side, other)
         length = np.linalg.norm(q - p, axis=1)
         for i, j, ln, a, b in zip(side[:-1].tolist(), side[1:].tolist(), length, w0, w1):
-            for t in _graded(ln, a, b):
+            for t in _graded(ln, a, b, spacing(min_angle)):
                 splits.split(i, j, float(t))
 
 
@@ -118,17 +127,17 @@ def _corner_width(vertices, side, other):
             float(_distance(vertices[side[-1:]], vertices[other[:-1]])[0]))
 
 
-def _graded(length, w0, w1):
+def _graded(length, w0, w1, most):
     """Inner fractions of an edge of ``length`` whose strip is ``w0`` wide at its start and
-    ``w1`` at its end (linearly between): each piece at most :data:`SPACING` times the width
-    where it starts, marched from the narrow end; :data:`MOST` equal pieces where that takes
+    ``w1`` at its end (linearly between): each piece at most ``most`` times the width where
+    it starts, marched from the narrow end; :data:`MOST` equal pieces where that takes
     more."""
     thin, wide = min(w0, w1), max(w0, w1)
-    if length <= SPACING * max(thin, NARROWEST * wide) or wide <= 0.0:
+    if length <= most * max(thin, NARROWEST * wide) or wide <= 0.0:
         return np.zeros(0)
     t = [0.0]
     while t[-1] < 1.0 and len(t) <= MOST:
-        t.append(t[-1] + SPACING * max(thin + (wide - thin) * t[-1], NARROWEST * wide) / length)
+        t.append(t[-1] + most * max(thin + (wide - thin) * t[-1], NARROWEST * wide) / length)
     if t[-1] < 1.0:
         t = np.linspace(0.0, 1.0, MOST + 1)
     t = np.asarray(t) / t[-1]
