@@ -19,7 +19,7 @@ import numpy as np
 from .chart import disc, finder, lscm, patch_edges
 
 __all__ = ["Patch", "patches", "chart", "charts", "spread", "area3", "SHORTEST", "SLIVER", "SPREAD",
-           "NEAR", "SUPER", "SAMPLES", "taper"]
+           "NEAR", "SUPER", "SAMPLES", "CREASE", "taper"]
 
 #: Refinement makes no edge shorter than this share of a chart's median edge.
 SHORTEST = 0.02
@@ -39,6 +39,14 @@ SAMPLES = 4000
 SPLITS = 3
 #: ... each with at least this many triangles.
 MINIMUM = 8
+#: Triangles of one network whose normals turn by more than this [deg] across their edge
+#: are in different patches (the edge a seam between them): a layout that makes the wing
+#: and the fuselage one network turns 120 deg at their junction, and triangles refined
+#: across it cut through the surface. A coarse circle's facets turn by 45 deg at 5 points a
+#: half.
+CREASE = 60.0
+#: ... along a line of such edges at least this share of the network's extent long.
+CREASE_LINE = 0.05
 SUPER = 3  # PythonCDT keeps its super-triangle's 3 vertices first until finalised
 
 
@@ -73,13 +81,15 @@ def patches(mesh):
     """Connected parts of every surface id, as (global triangle rows)."""
     out = []
     for s in np.unique(mesh.surface):
-        for rows in _connected(mesh, np.flatnonzero(mesh.surface == s)):
+        crease = not mesh.surfaces[s].endswith(" cap")    # a cap's tip and strip: strips
+        for rows in _connected(mesh, np.flatnonzero(mesh.surface == s), crease):
             out.extend(_opened(mesh, rows))
     return out
 
 
-def _connected(mesh, rows):
-    """The triangle ``rows`` as their parts connected through edges."""
+def _connected(mesh, rows, crease=False):
+    """The triangle ``rows`` as their parts connected through edges, with ``crease`` not
+    across a crease (:data:`CREASE`)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -89,10 +99,39 @@ def _connected(mesh, rows):
     order = np.argsort(inverse, kind="stable")
     inv, own = inverse[order], owner[order]
     same = inv[1:] == inv[:-1]
-    g = coo_matrix((np.ones(same.sum()), (own[:-1][same], own[1:][same])),
-                   shape=(len(t), len(t)))
+    a, b = own[:-1][same], own[1:][same]
+    p = mesh.vertices[t]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    size = np.linalg.norm(n, axis=1)
+    n /= np.maximum(size, 1e-300)[:, None]
+    smooth = (np.einsum("ij,ij->i", n[a], n[b]) >= np.cos(np.radians(CREASE))) \
+        | (size[a] == 0.0) | (size[b] == 0.0) | (not crease)
+    if not smooth.all():
+        smooth |= _short_creases(mesh.vertices[und[inv[:-1][same]]], t, ~smooth, mesh.vertices)
+    g = coo_matrix((np.ones(smooth.sum()), (a[smooth], b[smooth])), shape=(len(t), len(t)))
     count, label = connected_components(g, directed=False)
     return [rows[label == k] for k in range(count)]
+
+
+def _short_creases(ends, t, crease, vertices):
+    """(k,) which of the edges ``ends`` (k, 2, 3) marked ``crease`` lie on a line of creases
+    shorter than :data:`CREASE_LINE` of the triangles' extent: a sliver between two stations
+    a few thousandths apart stands across the surface and is no crease of it."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    k = np.flatnonzero(crease)
+    pts, ids = np.unique(ends[k].reshape(-1, 3), axis=0, return_inverse=True)
+    ids = ids.reshape(-1, 2)
+    count, label = connected_components(
+        coo_matrix((np.ones(len(k)), (ids[:, 0], ids[:, 1])), shape=(len(pts),) * 2),
+        directed=False)
+    length = np.linalg.norm(ends[k, 0] - ends[k, 1], axis=1)
+    line = np.bincount(label[ids[:, 0]], length, minlength=count)
+    extent = float(np.ptp(vertices[np.unique(t)], axis=0).max())
+    out = np.zeros(len(ends), bool)
+    out[k] = line[label[ids[:, 0]]] < CREASE_LINE * extent
+    return out
 
 
 def _opened(mesh, rows):

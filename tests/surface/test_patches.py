@@ -1,0 +1,62 @@
+"""The patches the re-triangulation works on."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+import juncture as jc
+import juncture.surface.patches as pt
+from juncture.surface.assemble import assemble
+from juncture.surface.quality import triangle_angles
+from tests.support import DATA
+
+
+def _geometry(name):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        return jc.complete(jc.read(DATA / "generated" / "remesh" / name))
+
+
+def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch):
+    """The wing and the fuselage's middle as one network (tests/data/generated/README.md)
+    turn 120 deg at the wing's root: the network is two patches there, the root line a seam
+    between them, and the surface re-triangulates with no triangle under 5 deg. As one patch
+    its triangles were refined across the crease, crossed each other, and the network kept
+    its assembled triangles (down to 0.0075 deg)."""
+    geo = _geometry("high_wing_one_network_with_the_body.inp")
+    assembled = assemble(geo)
+    lower = assembled.surfaces.index("wing-body lower")
+    parts = [rows for rows in pt.patches(assembled) if assembled.surface[rows[0]] == lower]
+    assert len(parts) == 2
+    # the two parts meet along a line of edges, and across it their normals turn by more
+    # than CREASE
+    t = [assembled.triangles[rows] for rows in parts]
+    shared = np.intersect1d(np.unique(t[0]), np.unique(t[1]))
+    assert len(shared) >= 3
+
+    def smallest():
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", jc.JunctureWarning)
+            surface = jc.mesh(geo)
+        return triangle_angles(surface.vertices, surface.triangles).min()
+
+    assert smallest() >= 5.0
+    monkeypatch.setattr(pt, "CREASE", 180.0)
+    assert smallest() < 1.0
+
+
+def test_a_sliver_standing_across_the_surface_is_no_crease(monkeypatch):
+    """Between two fuselage stations 0.005 ft apart (a wing's upper and lower trailing edge
+    cut by an octagonal body: tests/data/generated/README.md) a sliver stands across the
+    body, its normal 80-115 deg off its neighbours'; a line of creases that short (under
+    CREASE_LINE of the network's extent) does not cut the network."""
+    geo = _geometry("blunt_trailing_edge_cut_by_a_polygon_body.inp")
+    assembled = assemble(geo)
+    upper = assembled.surfaces.index("body upper")
+    rows = np.flatnonzero(assembled.surface == upper)
+    whole = len(pt._connected(assembled, rows, crease=False))
+    assert len(pt._connected(assembled, rows, crease=True)) == whole
+    monkeypatch.setattr(pt, "CREASE_LINE", 0.0)
+    assert len(pt._connected(assembled, rows, crease=True)) > whole
