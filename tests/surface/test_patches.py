@@ -9,6 +9,7 @@ import numpy as np
 import juncture as jc
 import juncture.surface.patches as pt
 from juncture.surface.assemble import assemble
+from juncture.surface.pipeline import _line_points
 from juncture.surface.quality import triangle_angles
 from tests.support import DATA
 
@@ -28,7 +29,9 @@ def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch):
     geo = _geometry("high_wing_one_network_with_the_body.inp")
     assembled = assemble(geo)
     lower = assembled.surfaces.index("wing-body lower")
-    parts = [rows for rows in pt.patches(assembled) if assembled.surface[rows[0]] == lower]
+    lines = _line_points(geo, assembled)
+    parts = [rows for rows in pt.patches(assembled, lines)
+             if assembled.surface[rows[0]] == lower]
     assert len(parts) == 2
     # the two parts meet along a line of edges, and across it their normals turn by more
     # than CREASE
@@ -51,12 +54,14 @@ def test_a_sliver_standing_across_the_surface_is_no_crease(monkeypatch):
     """Between two fuselage stations 0.005 ft apart (a wing's upper and lower trailing edge
     cut by an octagonal body: tests/data/generated/README.md) a sliver stands across the
     body, its normal 80-115 deg off its neighbours'; a line of creases that short (under
-    CREASE_LINE of the network's extent) does not cut the network."""
+    CREASE_LINE of the network's extent) does not cut the network, even taken as between
+    intersection points."""
     geo = _geometry("blunt_trailing_edge_cut_by_a_polygon_body.inp")
     assembled = assemble(geo)
     upper = assembled.surfaces.index("body upper")
     rows = np.flatnonzero(assembled.surface == upper)
-    whole = len(pt._connected(assembled, rows, crease=False))
-    assert len(pt._connected(assembled, rows, crease=True)) == whole
+    lines = np.ones(len(assembled.vertices), bool)       # as if every point were on one
+    whole = len(pt._connected(assembled, rows))
+    assert len(pt._connected(assembled, rows, lines)) == whole
     monkeypatch.setattr(pt, "CREASE_LINE", 0.0)
-    assert len(pt._connected(assembled, rows, crease=True)) > whole
+    assert len(pt._connected(assembled, rows, lines)) > whole

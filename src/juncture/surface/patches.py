@@ -39,11 +39,12 @@ SAMPLES = 4000
 SPLITS = 3
 #: ... each with at least this many triangles.
 MINIMUM = 8
-#: Triangles of one network whose normals turn by more than this [deg] across their edge
-#: are in different patches (the edge a seam between them): a layout that makes the wing
-#: and the fuselage one network turns 120 deg at their junction, and triangles refined
-#: across it cut through the surface. A coarse circle's facets turn by 45 deg at 5 points a
-#: half.
+#: Triangles of one network whose normals turn by more than this [deg] across an edge
+#: between two intersection points are in different patches (the edge a seam between them):
+#: a layout that makes the wing and the fuselage one network turns 120 deg at their
+#: junction, and triangles refined across it cut through the surface. (Elsewhere a network
+#: may turn as fast between its stations: a body block whose columns twist between two
+#: stations.)
 CREASE = 60.0
 #: ... along a line of such edges at least this share of the network's extent long.
 CREASE_LINE = 0.05
@@ -77,19 +78,21 @@ class Patch:
     local: np.ndarray | None = None      # vertices, and its triangles over them
 
 
-def patches(mesh):
-    """Connected parts of every surface id, as (global triangle rows)."""
+def patches(mesh, lines=None):
+    """Connected parts of every surface id, as (global triangle rows); with ``lines`` ((n,)
+    bool: the vertices on intersection lines) not connected across a crease between two
+    such points (:data:`CREASE`)."""
     out = []
     for s in np.unique(mesh.surface):
-        crease = not mesh.surfaces[s].endswith(" cap")    # a cap's tip and strip: strips
+        crease = None if mesh.surfaces[s].endswith(" cap") else lines  # a cap: strips
         for rows in _connected(mesh, np.flatnonzero(mesh.surface == s), crease):
             out.extend(_opened(mesh, rows))
     return out
 
 
-def _connected(mesh, rows, crease=False):
-    """The triangle ``rows`` as their parts connected through edges, with ``crease`` not
-    across a crease (:data:`CREASE`)."""
+def _connected(mesh, rows, lines=None):
+    """The triangle ``rows`` as their parts connected through edges, but not across a
+    crease between two vertices marked in ``lines`` (:data:`CREASE`)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -105,9 +108,14 @@ def _connected(mesh, rows, crease=False):
     size = np.linalg.norm(n, axis=1)
     n /= np.maximum(size, 1e-300)[:, None]
     smooth = (np.einsum("ij,ij->i", n[a], n[b]) >= np.cos(np.radians(CREASE))) \
-        | (size[a] == 0.0) | (size[b] == 0.0) | (not crease)
+        | (size[a] == 0.0) | (size[b] == 0.0)
+    ends = und[inv[:-1][same]]
+    if lines is None:
+        smooth[:] = True
+    else:
+        smooth |= ~lines[ends].all(axis=1)
     if not smooth.all():
-        smooth |= _short_creases(mesh.vertices[und[inv[:-1][same]]], t, ~smooth, mesh.vertices)
+        smooth |= _short_creases(mesh.vertices[ends], t, ~smooth, mesh.vertices)
     g = coo_matrix((np.ones(smooth.sum()), (a[smooth], b[smooth])), shape=(len(t), len(t)))
     count, label = connected_components(g, directed=False)
     return [rows[label == k] for k in range(count)]

@@ -106,7 +106,8 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     failures = None
     if min_angle:
         better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance,
-                                             check, lift, curvature, depth)
+                                             check, lift, curvature, depth,
+                                             _line_points(geometry, surface))
         if report is not None or (better is not surface and not check):
             return better, report
     report = None
@@ -205,9 +206,22 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     return better, report
 
 
-def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature, depth):
+def _line_points(geometry, surface):
+    """(n,) whether each vertex of ``surface`` is an intersection point of ``geometry``
+    (:func:`juncture.surface.imprint.on_lines`): a network may turn at a crease only there
+    (:data:`juncture.surface.patches.CREASE`)."""
+    from .imprint import on_lines
+
+    lines = np.zeros(len(surface.vertices), bool)
+    lines[list(on_lines(geometry, surface.vertices))] = True
+    return lines
+
+
+def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature, depth,
+              lines=None):
     """(surface, report, failures) of :func:`quality`, without its warning: failures None
-    where the re-triangulation was kept or the surface is open (returned as it is)."""
+    where the re-triangulation was kept or the surface is open (returned as it is).
+    ``lines``: see :func:`juncture.surface.remesh.remesh`."""
     from ..errors import GeometryError
     from .check import check_mesh
     from .remesh import remesh
@@ -219,7 +233,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     for _ in range(RETRIES + 1):
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
-                            tolerance=tolerance, keep=keep, lift=lift, **sizing)
+                            tolerance=tolerance, keep=keep, lift=lift, lines=lines, **sizing)
         except GeometryError as exc:
             failures = [str(exc)]
             break

@@ -464,7 +464,7 @@ def _edge_points(tri, n, cons, parent, uv, pts):
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
-           turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH):
+           turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH, lines=None):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -484,13 +484,16 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     a new edge turns by at most ``curvature`` degrees and, with ``lift.both`` (the surface's
     size at the points, :func:`juncture.surface.lift.surface_lift`), stands off it by at most
     ``depth`` times that size (:func:`_bent`): the enclosed volume converges as both shrink.
+    ``lines`` ((n,) bool, the vertices on intersection lines): a network is cut into patches
+    where it turns at a crease between such points (:data:`~juncture.surface.patches.CREASE`).
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
     from .strips import zipped
 
     splits = _splits(mesh, lift)
-    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle)
+    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
+                                                   lines)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
@@ -549,7 +552,7 @@ def _splits(mesh, lift):
                   set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
 
 
-def _sorted_patches(mesh, keep, lift, splits, min_angle):
+def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None):
     """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
     about ``min_angle``); a patch in ``keep``
@@ -559,7 +562,7 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle):
     from .strips import presplit, strip, tip_and_strip
 
     charted, kept, strips, copied = [], [], [], []
-    groups = patches(mesh)
+    groups = patches(mesh, lines)
     twin = {} if splits.mirror is None else twins(mesh, groups, splits.mirror)
     whole = {}                          # primary: its charts, where it is charted whole
     for i in [i for i in range(len(groups)) if i not in twin] + list(twin):
