@@ -65,3 +65,34 @@ def test_a_sliver_standing_across_the_surface_is_no_crease(monkeypatch):
     assert len(pt._connected(assembled, rows, lines)) == whole
     monkeypatch.setattr(pt, "CREASE_LINE", 0.0)
     assert len(pt._connected(assembled, rows, lines)) > whole
+
+
+def test_a_patch_whose_chart_folds_is_charted_in_halves(monkeypatch):
+    """A low wing's upper surface with a cubic fillet (tests/data/generated/README.md)
+    flattens by LSCM with one triangle folded where it turns down to the leading edge at the
+    root: it is charted in halves, and re-triangulated (it kept its assembled triangles,
+    hundreds of them under 5 deg)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(DATA / "generated" / "remesh" /
+                                  "low_wing_whose_upper_surface_folds_in_its_chart.inp"),
+                          fillet="cubic", keep_area=True)
+    assembled = assemble(geo)
+    upper = assembled.surfaces.index("wing upper")
+    rows = np.flatnonzero(assembled.surface == upper)
+    assert pt.chart(assembled, rows) is None
+    got = pt.charts(assembled, rows)
+    assert got is not None and len(got) >= 2
+    assert sum(len(p.tri) for p in got) == len(rows)
+
+    def slivers():
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", jc.JunctureWarning)
+            surface = jc.mesh(geo)
+        smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
+        name = np.array(surface.surfaces)[surface.surface]
+        return int(np.sum((smallest < 5.0) & np.char.startswith(name.astype(str), "wing up")))
+
+    assert slivers() == 0
+    monkeypatch.setattr(pt, "_halves", lambda mesh, rows: None)
+    assert slivers() > 100

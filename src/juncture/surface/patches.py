@@ -171,20 +171,22 @@ def charts(mesh, rows, depth=None):
     charted: one (:func:`chart`), or where its scale varies more than :data:`SPREAD`
     (a pod pointed at both ends with a pylon's or wing's footprint cut out of it charts as a
     disc whose far end LSCM squeezes to a point: straight chart triangles there cross in
-    3-D) the charts of its halves (:func:`_halves`), each split again the same way, at most
-    :data:`SPLITS` times, as long as every piece charts."""
+    3-D) or it does not chart at all (LSCM folds a triangle where a wing's upper surface
+    turns down to its leading edge beside a fillet) the charts of its halves
+    (:func:`_halves`), each split again the same way, at most :data:`SPLITS` times, as long
+    as every piece charts."""
     depth = SPLITS if depth is None else depth
     patch = chart(mesh, rows)
-    if patch is None or depth == 0 or patch.spread <= SPREAD:
+    if depth == 0 or (patch is not None and patch.spread <= SPREAD):
         return None if patch is None else [patch]
     parts = [part for half in _halves(mesh, rows) or [] for part in _connected(mesh, half)]
     if len(parts) < 2 or min(map(len, parts)) < MINIMUM:
-        return [patch]
+        return None if patch is None else [patch]
     out = []
     for part in parts:
         got = charts(mesh, part, depth - 1)
         if got is None:
-            return [patch]
+            return None if patch is None else [patch]
         out.extend(got)
     return out
 
