@@ -226,3 +226,32 @@ def test_a_blunt_trailing_edge_at_one_station_leaves_one_line_behind_it():
     assert len(aft(up)) >= 4 and _keys(aft(up)) == _keys(aft(lo))
     at_edge = lambda p: _keys(p[p[:, 0] == 55.0])  # noqa: E731
     assert at_edge(up) == _keys(upper.points[-1:]) and at_edge(lo) == _keys(lower.points[-1:])
+
+
+def test_rows_follow_a_bounding_curve_that_runs_to_the_keel(monkeypatch):
+    """A low wing on an arbitrary-section fuselage (tests/data/generated/README.md): aft of
+    the wing's trailing edge the blocks' bounding curve runs down to the keel before the
+    next body station, and stations are added so that it turns by at most 1 / TURNS of the
+    section a step: the mesh's section mid-interval is within 0.5 % of the union's (an
+    independent slice against the oracle's cells). With one interval there, the rows
+    twisted round the body and their straight lines cut 11 % of the section away."""
+    import warnings
+
+    import juncture as jc
+    import juncture.surface.body_split as bs
+    from tests.support import DATA, section_area
+    from tests.union_oracle import union_area
+
+    deck = DATA / "generated" / "assembly" / "low_wing_whose_block_boundary_runs_to_the_keel.inp"
+
+    def short(x):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", jc.JunctureWarning)
+            geo = jc.complete(jc.read(deck))
+            surface = jc.mesh(geo)
+        return 1.0 - section_area(surface.vertices, surface.triangles, x) / \
+            union_area(geo.configuration, x)
+
+    assert abs(short(103.0)) < 0.005
+    monkeypatch.setattr(bs, "TURNS", 1e-9)
+    assert short(103.0) > 0.08
