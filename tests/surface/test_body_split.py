@@ -255,3 +255,36 @@ def test_rows_follow_a_bounding_curve_that_runs_to_the_keel(monkeypatch):
     assert abs(short(103.0)) < 0.005
     monkeypatch.setattr(bs, "TURNS", 1e-9)
     assert short(103.0) > 0.08
+
+
+def test_rows_of_an_arbitrary_body_pass_through_its_sections_corners():
+    """Every vertex the deck gives for an arbitrary section (an icosagon here), between a
+    block row's ends, is a point of that row at the deck's stations: the rows keep the
+    polygon (sampled at equal steps of the surface parameter they cut its corners, 0.7 % of
+    the section). Checked against the deck's own points."""
+    import warnings
+
+    import juncture as jc
+    from juncture.model import ArbitraryBody
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "assembly" / "low_wing_whose_block_boundary_runs_to_the_keel.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck))
+    body = next(c for c in geo.configuration if isinstance(c, ArbitraryBody))
+    checked = 0
+    for name in ("body upper", "body lower"):
+        net = np.asarray(geo.networks[name])
+        for row in net:
+            hit = np.flatnonzero(body.x == row[0, 0])
+            if not hit.size or np.ptp(row[:, 0]) > 0.0:
+                continue
+            section = body.sections[hit[-1]]
+            s = body.parameter_of(np.column_stack([np.full(len(section), row[0, 0]), section]))
+            ends = body.parameter_of(row[[0, -1]])
+            inside = (s > ends.min() + 1e-9) & (s < ends.max() - 1e-9)
+            gap = np.linalg.norm(section[inside][:, None] - row[None, :, 1:], axis=2).min(axis=1)
+            assert np.all(gap < 1e-9), (name, row[0, 0], gap.max())
+            checked += int(inside.sum())
+    assert checked > 20

@@ -511,6 +511,11 @@ class CircularBody:
         return out
 
 
+#: A half-section's vertex turning by more than this [deg] is a corner
+#: (:meth:`ArbitraryBody.corners`).
+CORNER = 1.0
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class ArbitraryBody:
     """A fuselage with arbitrary (y, z) half-sections, as the deck's J2 = +1 option.
@@ -684,6 +689,22 @@ class ArbitraryBody:
         p0 = self._blend(k, w, j)
         p1 = self._blend(k, w, j + 1)
         return np.concatenate([x[..., None], p0 + t * (p1 - p0)], axis=-1)
+
+    def corners(self, x, turn=CORNER):
+        """(k,) the surface parameters of the corners of the half-section at the station x
+        (a float): its vertices where the polyline turns by more than ``turn`` degrees, ends
+        excluded. Network rows through them keep the section's corners (rows sampled at
+        equal steps of ``s`` cut them: 0.7 % of an octagon-like section)."""
+        k, w = self._pair(float(x))
+        n = int(self._count[k])
+        u = self._u[k][:n]
+        p = self._blend(k, w, slice(0, n))
+        d = np.diff(p, axis=0)
+        length = np.linalg.norm(d, axis=1)
+        a, b = d[:-1], d[1:]
+        ok = (length[:-1] > 0.0) & (length[1:] > 0.0)
+        cos = np.einsum("ij,ij->i", a, b) / np.maximum(length[:-1] * length[1:], 1e-300)
+        return u[1:-1][ok & (cos < np.cos(np.radians(turn)))]
 
     def center_at(self, x):
         """(..., 2): y = 0 and the mean height of the section over its surface parameter,

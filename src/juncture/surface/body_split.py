@@ -242,6 +242,7 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     # The rows end exactly at theta_b (not at top + 1.0 * (theta_b - top), a bit off), so
     # where the upper and lower bounding curves meet the two blocks share the point.
     ang_u[:, -1], ang_l[:, -1] = th_u, th_l
+    ang_u, ang_l = through_corners(body, xu, ang_u), through_corners(body, xl, ang_l)
     up = body.point(xu[:, None], ang_u)
     lo = body.point(xl[:, None], ang_l)
     _end_at_points(up, xu, upper_regions, top_value)
@@ -318,6 +319,49 @@ def _with_point(region, other, end):
     return Boundary(np.concatenate([region.x, other.x[pick]]),
                     np.concatenate([region.theta, other.theta[pick]]), region.name,
                     np.concatenate([region.points, other.points[pick]]), region.exact)
+
+
+def through_corners(body, x, par):
+    """Rows of surface parameters ``par`` (k, n) at stations ``x`` through the corners of
+    the sections there (:meth:`~juncture.model.body.ArbitraryBody.corners`; a circular body
+    has none) between each row's ends: each corner takes an inner point of its own, in
+    order and as near as the others leave room for (:func:`_anchors`), and the points
+    between stay where they can. The rows keep the polygon of an arbitrary section."""
+    corners = getattr(body, "corners", None)
+    if corners is None or par.shape[1] < 3:
+        return par
+    out = np.array(par, float)
+    for i, xi in enumerate(np.asarray(x, float).tolist()):
+        row = out[i]
+        lo, hi = min(row[0], row[-1]), max(row[0], row[-1])
+        c = corners(xi)
+        c = np.sort(c[(c > lo) & (c < hi)])
+        if row[-1] < row[0]:
+            c = c[::-1]
+        if c.size:
+            out[i] = _anchors(row, c)
+    return out
+
+
+def _anchors(row, c):
+    """``row`` (n,) with as many of the values ``c`` (in the row's order) as it has inner
+    points taken by distinct inner points, in order, each the nearest one the corners after
+    it leave free; the other points stay (the columns run on straight from the rows before
+    and after), or are spread evenly between where they would fall out of order."""
+    n = row.size
+    c = c[:n - 2]
+    idx, at = [0], 0
+    for k, v in enumerate(c):
+        window = np.arange(at + 1, n - 1 - (c.size - 1 - k))
+        at = int(window[np.argmin(np.abs(row[window] - v))])
+        idx.append(at)
+    idx.append(n - 1)
+    moved = row.copy()
+    moved[idx[1:-1]] = c
+    step = np.diff(moved)
+    if np.all(step > 0.0) or np.all(step < 0.0):
+        return moved
+    return np.interp(np.arange(n), idx, np.concatenate([[row[0]], c, [row[-1]]]))
 
 
 def _turning(x, theta, spans, turn):
