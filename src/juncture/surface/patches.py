@@ -103,22 +103,26 @@ def _connected(mesh, rows, lines=None):
     inv, own = inverse[order], owner[order]
     same = inv[1:] == inv[:-1]
     a, b = own[:-1][same], own[1:][same]
+    smooth = np.ones(len(a), bool) if lines is None else _smooth(mesh, t, a, b,
+                                                                 und[inv[:-1][same]], lines)
+    g = coo_matrix((np.ones(smooth.sum()), (a[smooth], b[smooth])), shape=(len(t), len(t)))
+    count, label = connected_components(g, directed=False)
+    return [rows[label == k] for k in range(count)]
+
+
+def _smooth(mesh, t, a, b, ends, lines):
+    """(k,) whether the triangles ``a`` and ``b`` of ``t`` stay connected across their
+    edges ``ends`` (k, 2): unless the edge joins two points of ``lines``, their normals turn
+    by more than :data:`CREASE` there, and the edge lies on a long line of such creases."""
     p = mesh.vertices[t]
     n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     size = np.linalg.norm(n, axis=1)
     n /= np.maximum(size, 1e-300)[:, None]
     smooth = (np.einsum("ij,ij->i", n[a], n[b]) >= np.cos(np.radians(CREASE))) \
-        | (size[a] == 0.0) | (size[b] == 0.0)
-    ends = und[inv[:-1][same]]
-    if lines is None:
-        smooth[:] = True
-    else:
-        smooth |= ~lines[ends].all(axis=1)
+        | (size[a] == 0.0) | (size[b] == 0.0) | ~lines[ends].all(axis=1)
     if not smooth.all():
         smooth |= _short_creases(mesh.vertices[ends], t, ~smooth, mesh.vertices)
-    g = coo_matrix((np.ones(smooth.sum()), (a[smooth], b[smooth])), shape=(len(t), len(t)))
-    count, label = connected_components(g, directed=False)
-    return [rows[label == k] for k in range(count)]
+    return smooth
 
 
 def _short_creases(ends, t, crease, vertices):
