@@ -5,6 +5,7 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
+import pytest
 
 import juncture as jc
 import juncture.surface.patches as pt
@@ -20,7 +21,7 @@ def _geometry(name):
         return jc.complete(jc.read(DATA / "generated" / "remesh" / name))
 
 
-def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch):
+def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, slow=False):
     """The wing and the fuselage's middle as one network (tests/data/generated/README.md)
     turn 120 deg at the wing's root: the network is two patches there, the root line a seam
     between them, and the surface re-triangulates with no triangle under 5 deg. As one patch
@@ -46,8 +47,16 @@ def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch):
         return triangle_angles(surface.vertices, surface.triangles).min()
 
     assert smallest() >= 5.0
+    if not slow:
+        return
     monkeypatch.setattr(pt, "CREASE", 180.0)
     assert smallest() < 1.0
+
+
+@pytest.mark.slow
+def test_slow_a_network_charted_across_its_crease_crosses_itself(monkeypatch):
+    """The counterfactual of the test above (one more mesh)."""
+    test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, slow=True)
 
 
 def test_a_sliver_standing_across_the_surface_is_no_crease(monkeypatch):
@@ -72,7 +81,7 @@ def test_a_sliver_standing_across_the_surface_is_no_crease(monkeypatch):
     assert len(pt._connected(assembled, rows, lines)) > whole
 
 
-def test_a_patch_whose_chart_folds_is_charted_in_halves(monkeypatch):
+def test_a_patch_whose_chart_folds_is_charted_in_halves(monkeypatch, slow=False):
     """A low wing's upper surface with a cubic fillet (tests/data/generated/README.md)
     flattens by LSCM with one triangle folded where it turns down to the leading edge at the
     root: it is charted in halves, and re-triangulated (it kept its assembled triangles,
@@ -99,5 +108,13 @@ def test_a_patch_whose_chart_folds_is_charted_in_halves(monkeypatch):
         return int(np.sum((smallest < 5.0) & np.char.startswith(name.astype(str), "wing up")))
 
     assert slivers() == 0
+    if not slow:
+        return
     monkeypatch.setattr(pt, "_halves", lambda mesh, rows: None)
     assert slivers() > 100
+
+
+@pytest.mark.slow
+def test_slow_a_patch_whose_chart_folds_keeps_its_slivers_uncharted(monkeypatch):
+    """The counterfactual of the test above (one more mesh)."""
+    test_a_patch_whose_chart_folds_is_charted_in_halves(monkeypatch, slow=True)

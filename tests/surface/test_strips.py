@@ -152,7 +152,7 @@ def test_a_tip_and_strip_cap_is_charted_and_zipped_apart():
     assert abs(surface.volume() / ref - 1.0) < 0.005
 
 
-def test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch):
+def test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch, slow=False):
     """A generated wing of two sections (tests/data/generated/README.md) with a wedge of a
     trailing edge, 0.017 ft thick at the tip and closed at the root: its surfaces grade down
     to the strip's pieces (remesh.FINEST), and the strip is graded from its width at the
@@ -182,10 +182,18 @@ def test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch):
         return int(np.sum((smallest < 5.0) & (caps | ~cap)))
 
     assert slivers() == 0
+    if not slow:
+        return
     monkeypatch.setattr(st, "_corner_width", lambda vertices, side, other: (0.0, 0.0))
     assert slivers() > 10
     monkeypatch.setattr(rm, "FINEST", 1e-3)
     assert slivers(caps=False) > 1000
+
+
+@pytest.mark.slow
+def test_slow_a_wing_of_two_sections_fans_its_strip_without_its_corner_width(monkeypatch):
+    """The counterfactuals of the test above (three more meshes of the airplane)."""
+    test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch, slow=True)
 
 
 def test_a_blunt_trailing_edge_cut_by_the_body_keeps_its_root_edge(monkeypatch):
@@ -222,7 +230,7 @@ def test_a_blunt_trailing_edge_cut_by_the_body_keeps_its_root_edge(monkeypatch):
     assert smallest() < 1.0
 
 
-def test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch):
+def test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch, slow=False):
     """A swept wing of four ordinates per section with a trailing edge 0.015 ft thick
     (tests/data/generated/README.md): its trailing edge is split into thousands of pieces
     for the strip, and the wing's surfaces grade away from them with good angles: refinement
@@ -250,6 +258,8 @@ def test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch):
         return float(np.mean(smallest[wing] < 20.0))
 
     assert share_under_20() < 0.002
+    if not slow:
+        return
     own = rm._budget
 
     def own_points_only(patch, n):
@@ -257,3 +267,9 @@ def test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch):
 
     monkeypatch.setattr(rm, "_budget", own_points_only)
     assert share_under_20() > 0.1
+
+
+@pytest.mark.slow
+def test_slow_a_wing_split_to_its_strips_spacing_without_the_budget_for_it(monkeypatch):
+    """The counterfactual of the test above (one more mesh of a 170k-triangle airplane)."""
+    test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch, slow=True)
