@@ -346,24 +346,3 @@ def test_arbitrary_body_gap_is_a_straight_blend():
     mid = np.array([[0, -1.5], [1, -1], [1.5, 0], [1, 1], [0, 1.5]])
     np.testing.assert_allclose(b.point(3.5, [0, 0.25, 0.5, 0.75, 1])[:, 1:], mid,
                                atol=1e-15)
-
-
-def test_a_section_a_rounding_across_is_a_point():
-    """A half-section no larger than POINT of the body's length across is its point on
-    y = 0 (a pointed end scaled to nothing and rounded to the card's last digit,
-    tests/data/generated/README.md); one ten times larger keeps its polyline, and every
-    surface point at that station is the point."""
-    from juncture.model.body import POINT
-
-    length = 65.0
-    square = [[0.0, -1.0], [1.0, -1.0], [1.0, 1.0], [0.0, 1.0]]
-    grain = POINT * length
-    rounded = [[0.0, 0.3341], [0.0, 0.3341], [0.4 * grain, 0.3341], [0.0, 0.3341 + 0.8 * grain]]
-    body = ArbitraryBody("b", [0.0, length], [square, rounded])
-    z = 0.3341 + 0.4 * grain
-    np.testing.assert_array_equal(body.sections[1], [[0.0, z]] * 4)
-    s = np.linspace(0.0, 1.0, 7)
-    np.testing.assert_array_equal(body.point(length, s), np.tile([length, 0.0, z], (7, 1)))
-    bigger = [[0.0, 0.0], [5.0 * grain, 0.0], [5.0 * grain, 10 * grain], [0.0, 10 * grain]]
-    kept = ArbitraryBody("b", [0.0, length], [square, bigger])
-    np.testing.assert_array_equal(kept.sections[1], bigger)

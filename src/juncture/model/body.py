@@ -514,26 +514,6 @@ class CircularBody:
 #: A half-section's vertex turning by more than this [deg] is a corner
 #: (:meth:`ArbitraryBody.corners`).
 CORNER = 1.0
-#: A half-section no larger than this share of the body's length across (in y, mirror
-#: image included, and in z) is its point on y = 0 at the middle of its z range: a pointed
-#: end given as a section scaled to nothing and rounded to the card's last digit (y = 0 but
-#: one 0.0001, z 0.3341 to 0.3342 on a 65 ft fuselage) is a point, not a polyline that runs
-#: back on itself (whose network rows twisted and crossed).
-POINT = 1e-5
-
-
-def _points(sections, tiny):
-    """``sections`` with each one no larger than ``tiny`` across (see :data:`POINT`) made
-    its point: every vertex at y = 0 and the middle of its z range (the params stay)."""
-    out = []
-    for a in sections:
-        z = 0.5 * (a[:, 1].min() + a[:, 1].max())
-        if 2.0 * a[:, 0].max() <= tiny and np.ptp(a[:, 1]) <= tiny and (
-                a[:, 0].any() or np.any(a[:, 1] != z)):
-            a = np.column_stack([np.zeros(len(a)), np.full(len(a), z)])
-            a.flags.writeable = False
-        out.append(a)
-    return out
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -629,7 +609,6 @@ class ArbitraryBody:
                                     name, k + 1)
             secs.append(a)
         seg, _ = _segment_layout(x, self.segments, name)
-        secs = _points(secs, POINT * float(x.max() - x.min()))
         params = None
         if self.params is not None:
             params = []

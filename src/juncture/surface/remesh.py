@@ -80,6 +80,11 @@ FLOOR = 1e-6
 #: trailing edge and fanned them, 1,900 triangles under 5 deg on each side).
 PIECE = 0.5
 FINEST = 1e-4
+#: A patch no larger than this share of the surface's size keeps its triangles (a fuselage's
+#: base given as a section 1e-4 ft across, a point rounded to the card's last digit: refined,
+#: its cap took 88,000 triangles a few nanometres across, and the self-intersection check
+#: ran out of memory).
+TINY = 1e-5
 #: A triangle with a 3-D angle under this [deg] loses the vertex opposite
 #: its longest edge where refinement put it there (:func:`_drop_flat_apexes`).
 FLAT3D = 6.0
@@ -167,14 +172,43 @@ def _known(patch, splits):
 
 
 def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
-    """:func:`_triangulate_once`, again while it drops flat triangles' points."""
+    """:func:`_triangulate_once`, again while it drops flat triangles' points; where the
+    triangles without them are worse in 3-D than the ones that had them (the cavity a point
+    leaves is triangulated afresh: a point dropped near a nose left a triangle of 3 deg
+    where the flat one had 5.8), once more with every point and none dropped."""
+    drop = True
     while True:
-        got = _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape)
-        if got is not _AGAIN:
-            return got
+        before = patch.extra_uv, patch.extra_id
+        got = _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape,
+                                drop)
+        if isinstance(got, float):              # dropped: the worst angle it had
+            uv, ids = np.concatenate(before[0]), np.concatenate(before[1])
+            gone = ~np.isin(ids, np.concatenate(patch.extra_id))
+            old = patch.undo or (uv[:0], ids[:0], got)
+            patch.undo = (np.concatenate([old[0], uv[gone]]),
+                          np.concatenate([old[1], ids[gone]]), old[2])
+            continue
+        if got is True and patch.undo is not None:
+            (uv, ids, worst), patch.undo = patch.undo, None
+            if _worst(patch, splits) < worst:
+                patch.extra_uv, patch.extra_id = patch.extra_uv + [uv], patch.extra_id + [ids]
+                drop = False
+                continue
+        return got
 
 
-_AGAIN = object()
+def _limits(patch, uv, cons):
+    """(points refinement may add, shortest edge it may make) in the patch's chart."""
+    piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
+    return _budget(patch, len(uv)), max(patch.shortest * FINEST / SHORTEST,
+                                         min(patch.shortest, PIECE * float(piece)))
+
+
+def _worst(patch, splits):
+    """The smallest 3-D angle [deg] of the patch's current triangles."""
+    from .quality import triangle_angles
+
+    return float(triangle_angles(splits.all(), patch.out).min(initial=180.0))
 
 
 def _budget(patch, n):
@@ -188,11 +222,14 @@ def _budget(patch, n):
     return max(0, BUDGET * (len(patch.uv) + on_seams) + 200 - extra)
 
 
-def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape):
+def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape,
+                      drop=True):
     """One constrained (and, with ``refine``, refined) triangulation of a patch's chart.
 
     New interior points are kept with the patch; new points on boundary pieces are
-    registered in ``splits`` (on their original edge, at the same fraction). Returns True
+    registered in ``splits`` (on their original edge, at the same fraction). With ``drop``,
+    in the rounds that do not refine, flat triangles' points are dropped first
+    (:func:`_drop_flat_apexes`; returns the smallest angle they had). Returns True
     when the triangulation holds every point it must (it is kept in ``patch.out``), False
     when boundary points were added (triangulate again), None when PythonCDT refuses it.
     """
@@ -207,10 +244,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         tri.insert_edges(cons)
         outer = tri.collect_outer_triangles_and_holes()
         if refine:
-            piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
-            shortest = max(patch.shortest * FINEST / SHORTEST,
-                           min(patch.shortest, PIECE * float(piece)))
-            budget = _budget(patch, n)
+            budget, shortest = _limits(patch, uv, cons)
             if area is not None:
                 tri.refine_triangles(budget, cdt.RefinementCriterion.LARGEST_AREA, area,
                                      outer, shortest)
@@ -239,8 +273,9 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     boundary = np.zeros((len(pts), 2), bool)       # on the boundary, on a free piece
     boundary[cons.ravel(), 0] = True
     boundary[cons[free].ravel(), 1] = True
-    if not refine and _drop_flat_apexes(patch, splits, gid, local):
-        return _AGAIN        # no seam points are added now: triangulate again at once
+    worst = _drop_flat_apexes(patch, splits, gid, local) if drop and not refine else None
+    if worst is not None:
+        return worst         # no seam points are added now: triangulate again at once
     far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
     if tol is not False:
         far = np.concatenate([far, _chords(patch, splits, vertices, pts, gid, local,
@@ -257,25 +292,26 @@ def _drop_flat_apexes(patch, splits, gid, local):
     """In the rounds that add no seam points: drop the interior points (added by this
     patch's refinement) opposite the longest edge of a triangle flat in 3-D (a seam point
     that came late, lifted onto the surface beside a point put there before, or points
-    crowded where the chart stretches); True if any was dropped (the patch is triangulated
-    again without them at once, each time with fewer points)."""
+    crowded where the chart stretches); if any was dropped, the smallest 3-D angle the
+    triangles had (the patch is triangulated again without them at once, each time with
+    fewer points), else None."""
     from .quality import triangle_angles
 
     if not patch.extra_id:
-        return False
+        return None
     angles = triangle_angles(splits.all(), gid[local])
     rows = np.flatnonzero(angles.min(axis=1) < FLAT3D)
     if not len(rows):
-        return False
+        return None
     apex = local[rows, np.argmax(angles[rows], axis=1)]     # opposite the longest edge
     ids = np.concatenate(patch.extra_id)
     drop = np.intersect1d(gid[apex], ids)
     if not len(drop):
-        return False
+        return None
     keep = ~np.isin(ids, drop)
     patch.extra_uv = [np.concatenate(patch.extra_uv)[keep]]
     patch.extra_id = [ids[keep]]
-    return True
+    return float(angles.min())
 
 
 def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
@@ -492,10 +528,10 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     from .strips import zipped
 
     splits = _splits(mesh, lift)
-    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
-                                                   lines)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
+    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
+                                                   lines, TINY * size)
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
@@ -552,11 +588,12 @@ def _splits(mesh, lift):
                   set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
 
 
-def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None):
+def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0):
     """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
     about ``min_angle``); a patch in ``keep``
-    or one that cannot be charted keeps its triangles; the mirror image of a patch charted
+    or one that cannot be charted keeps its triangles, as does one no larger than ``tiny``
+    (the cap of a section a rounding's size across); the mirror image of a patch charted
     whole (:func:`juncture.surface.mirror.twins`) is (its rows, that patch's charts), and
     takes their triangles mirrored at the end."""
     from .strips import presplit, strip, tip_and_strip
@@ -570,7 +607,7 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None):
         if whole.get(twin.get(i)):
             copied.append((rows, whole[twin[i]]))
             continue
-        held = mesh.surface[rows[0]] in keep
+        held = mesh.surface[rows[0]] in keep or _extent(mesh, rows) <= tiny
         thin = None if held else strip(mesh, rows)
         if thin is not None:
             strips.append(thin)
@@ -591,6 +628,11 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None):
             charted.append(patch)
     _mark_free(charted, splits)
     return charted, kept, strips, copied
+
+
+def _extent(mesh, rows):
+    """The largest extent along x, y or z of the triangle ``rows``."""
+    return float(np.ptp(mesh.vertices[mesh.triangles[rows].ravel()], axis=0).max())
 
 
 def _mark_free(charted, splits):
