@@ -76,7 +76,7 @@ class Patch:
     spread: float = 1.0                  # how much the chart's scale varies (spread())
     pts: np.ndarray | None = None        # chart coordinates of the current triangulation's
     local: np.ndarray | None = None      # vertices, and its triangles over them
-    undo: tuple | None = None            # (interior points, smallest angle) before a drop
+    undo: tuple | None = None            # dropped points (chart, ids), worst angle before
 
 
 def patches(mesh, lines=None):
