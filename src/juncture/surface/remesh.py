@@ -198,13 +198,6 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
         return got
 
 
-def _limits(patch, uv, cons):
-    """(points refinement may add, shortest edge it may make) in the patch's chart."""
-    piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
-    return _budget(patch, len(uv)), max(patch.shortest * FINEST / SHORTEST,
-                                         min(patch.shortest, PIECE * float(piece)))
-
-
 def _worst(patch, splits):
     """The smallest 3-D angle [deg] of the patch's current triangles."""
     from .quality import triangle_angles
@@ -245,7 +238,10 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         tri.insert_edges(cons)
         outer = tri.collect_outer_triangles_and_holes()
         if refine:
-            budget, shortest = _limits(patch, uv, cons)
+            piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
+            shortest = max(patch.shortest * FINEST / SHORTEST,
+                           min(patch.shortest, PIECE * float(piece)))
+            budget = _budget(patch, n)
             if area is not None:
                 tri.refine_triangles(budget, cdt.RefinementCriterion.LARGEST_AREA, area,
                                      outer, shortest)
