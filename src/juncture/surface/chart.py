@@ -13,15 +13,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from .rows import unique_pairs
+
 __all__ = ["disc", "finder", "lscm", "locate", "patch_edges"]
 
 
 def patch_edges(tri):
     """(directed (3m, 2), undirected unique (e, 2), uses per unique edge, inverse (3m,))."""
     directed = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
-    und, inverse, uses = np.unique(np.sort(directed, axis=1), axis=0, return_inverse=True,
-                                   return_counts=True)
-    return directed, und, uses, inverse.ravel()
+    und, inverse, uses = unique_pairs(np.sort(directed, axis=1), return_inverse=True,
+                                      return_counts=True)
+    return directed, und, uses, inverse
 
 
 def _loops(tri):

@@ -28,6 +28,7 @@ import numpy as np
 from ..errors import DeckError
 from .predicates import orient2d, orient3d, segments_hit_triangles, triangles_intersect
 from .quality import triangle_angles
+from .rows import unique_pairs, unique_points
 
 __all__ = ["CheckReport", "check_mesh", "read_triangles", "self_intersections"]
 
@@ -114,17 +115,17 @@ def read_triangles(path):
         raise DeckError(f"holds no triangles (cells: {kinds})", path=path)
     pts = np.asarray(m.points, float)[:, :3]
     tri = np.concatenate(tris).astype(np.int64)
-    uniq, inverse = np.unique(pts, axis=0, return_inverse=True)
-    return uniq, inverse.ravel()[tri]
+    uniq, inverse = unique_points(pts + 0.0, return_inverse=True)
+    return uniq, inverse[tri]
 
 
 def _edges(tri):
     directed = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
     und = np.sort(directed, axis=1)
-    keys, inverse, uses = np.unique(und, axis=0, return_inverse=True, return_counts=True)
+    keys, inverse, uses = unique_pairs(und, return_inverse=True, return_counts=True)
     forward = (directed[:, 0] < directed[:, 1]).astype(float)
-    n_forward = np.bincount(inverse.ravel(), weights=forward, minlength=len(keys))
-    return keys, inverse.ravel(), uses, n_forward
+    n_forward = np.bincount(inverse, weights=forward, minlength=len(keys))
+    return keys, inverse, uses, n_forward
 
 
 def _bodies(n_vertices, tri):
@@ -236,7 +237,7 @@ def self_intersections(vertices, triangles):
                                        np.flatnonzero(~upper & ~lone))])
     found = _search(v, tri, pairs)
     both = found[np.all(image[found] >= 0, axis=1)]
-    return np.unique(np.sort(np.concatenate([found, image[both]]), axis=1), axis=0)
+    return unique_pairs(np.sort(np.concatenate([found, image[both]]), axis=1))
 
 
 #: A surface with more than this share of its triangles without a mirror image is searched

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .rows import unique_pairs, unique_points
+
 __all__ = ["mirror_map", "twins", "copy_triangles", "symmetrise", "triangle_mirror", "FLIP"]
 
 #: The mirror image in y = 0.
@@ -30,8 +32,8 @@ def mirror_map(vertices):
     v = np.asarray(vertices, float)
     n = len(v)
     both = np.concatenate([v, v * FLIP]) + 0.0             # -0.0 is 0.0
-    _, first, inverse = np.unique(both, axis=0, return_index=True, return_inverse=True)
-    at = first[inverse.ravel()[n:]]
+    _, first, inverse = unique_points(both, return_index=True, return_inverse=True)
+    at = first[inverse[n:]]
     return np.where(at < n, at, -1)
 
 
@@ -62,7 +64,7 @@ def _rim(triangles):
     same whichever diagonals its quads have and wherever its chart was cut open."""
     e = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]],
                                 triangles[:, [2, 0]]]), axis=1)
-    u, count = np.unique(e, axis=0, return_counts=True)
+    u, count = unique_pairs(e, return_counts=True)
     return tuple(map(tuple, u[count == 1].tolist()))
 
 

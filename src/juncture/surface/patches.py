@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .chart import disc, finder, lscm, patch_edges
+from .rows import unique_points
 
 __all__ = ["Patch", "patches", "chart", "charts", "spread", "area3", "SHORTEST", "SLIVER", "SPREAD",
            "NEAR", "SUPER", "SAMPLES", "CREASE", "taper"]
@@ -134,7 +135,7 @@ def _short_creases(ends, t, crease, vertices):
     from scipy.sparse.csgraph import connected_components
 
     k = np.flatnonzero(crease)
-    pts, ids = np.unique(ends[k].reshape(-1, 3), axis=0, return_inverse=True)
+    pts, ids = unique_points(ends[k].reshape(-1, 3) + 0.0, return_inverse=True)
     ids = ids.reshape(-1, 2)
     count, label = connected_components(
         coo_matrix((np.ones(len(k)), (ids[:, 0], ids[:, 1])), shape=(len(pts),) * 2),

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .rows import unique_pairs
+
 __all__ = ["MeshSummary", "summarize", "triangle_angles"]
 
 
@@ -74,8 +76,7 @@ def summarize(mesh):
     t = mesh.triangles.astype(np.int64)
     directed = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
     undirected = np.sort(directed, axis=1)
-    _, inverse, uses = np.unique(undirected, axis=0, return_inverse=True, return_counts=True)
-    inverse = inverse.ravel()
+    _, inverse, uses = unique_pairs(undirected, return_inverse=True, return_counts=True)
     forward = directed[:, 0] < directed[:, 1]
     n_forward = np.bincount(inverse, weights=forward, minlength=len(uses))
     two = uses == 2

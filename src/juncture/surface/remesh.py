@@ -38,6 +38,7 @@ import numpy as np
 from .chart import locate
 from .mirror import copy_triangles, mirror_map, symmetrise, twins
 from .patches import SHORTEST, SUPER, area3, charts, patches, taper
+from .rows import unique_pairs
 from .splits import Splits, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
@@ -641,8 +642,8 @@ def _mark_free(charted, splits):
     if splits.move is None:
         free = np.ones(sum(map(len, ends)), bool)
     else:
-        seams, inverse = np.unique(np.concatenate(ends), axis=0, return_inverse=True)
-        free = ~splits.move.agree(seams[:, 0], seams[:, 1])[inverse.ravel()]
+        seams, inverse = unique_pairs(np.concatenate(ends), return_inverse=True)
+        free = ~splits.move.agree(seams[:, 0], seams[:, 1])[inverse]
     for patch, part in zip(charted, np.split(free, np.cumsum(list(map(len, ends)))[:-1])):
         patch.free = part
 
