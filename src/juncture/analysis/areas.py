@@ -70,8 +70,12 @@ def _circular_interval(body, x, s, span_axis):
     Empty intervals come back with ``lo == hi`` at the section centre, which continues the
     boundary functions continuously past the body's edge (the root bracketing relies on it).
     """
-    c = body.center_at(x)
-    r = body.radius_at(x)
+    x, s = np.broadcast_arrays(np.asarray(x, float), np.asarray(s, float))
+    # The quadrature asks at a few stations many times over (every point of a plane x):
+    # the section once per station.
+    xu, inverse = np.unique(x, return_inverse=True)
+    c = body.center_at(xu)[inverse.reshape(x.shape)]
+    r = body.radius_at(xu)[inverse.reshape(x.shape)]
     sc, tc = (c[..., 0], c[..., 1]) if span_axis == 1 else (c[..., 1], c[..., 0])
     half = np.sqrt(np.maximum(r * r - (s - sc) ** 2, 0.0))
     return tc - half, tc + half
@@ -83,8 +87,10 @@ def _arbitrary_interval(body, x, s, span_axis):
     shape = x.shape
     xf, sf = x.ravel(), s.ravel()
     lo, hi = np.zeros(xf.size), np.zeros(xf.size)
+    xu, inverse = np.unique(xf, return_inverse=True)      # a few stations, asked many times
+    sections = body._sections_at(xu)
     for a in range(0, xf.size, _CHUNK):
-        sec = body._sections_at(xf[a:a + _CHUNK])  # (q, m, 2) y, z from bottom to top
+        sec = sections[inverse[a:a + _CHUNK]]  # (q, m, 2) y, z from bottom to top
         y, z = sec[..., 0], sec[..., 1]
         if span_axis == 1:  # line y = |s|: crossings in z
             u, v, q = y, z, np.abs(sf[a:a + _CHUNK])[:, None]
@@ -244,7 +250,7 @@ class _WingCut:
         graded = np.concatenate([edges[:, 0::2, None] + half, edges[:, 1::2, None] - half],
                                 axis=1).reshape(x.size, -1)
         bp = np.concatenate([bp, graded], axis=1)
-        a, b = _pieces(np.concatenate([bp, edges], axis=1))
+        a, b = _compact(*_pieces(np.concatenate([bp, edges], axis=1)))
         t = np.arange(_N_BRACKET) / _N_BRACKET
         grid = np.concatenate([(a[..., None] + (b - a)[..., None] * t).reshape(x.size, -1),
                                b[:, -1:]], axis=1)  # (n_x, n_grid), non-decreasing
@@ -271,16 +277,19 @@ class _WingCut:
             edges, roots = self.body_breakpoints(x, bp)
             bp = np.concatenate([bp, edges, roots], axis=1)
         a, b = _pieces(np.clip(bp, self.st[0], self.st[-1]))
+        # Only the pieces of positive length (most rows' breakpoints are padding: the
+        # transport's wing has 85 columns and at most 16 pieces), as one list.
+        row, col = np.nonzero(b > a)
+        ea = (a[row, col, None] == edges[row]).any(axis=-1)
+        eb = (b[row, col, None] == edges[row]).any(axis=-1)
+        a, b, xs = a[row, col], b[row, col], x[row]
         # Gauss-Legendre on every piece. Where a piece ends at a body edge and the body cuts
         # the wing there, the overlap has a square-root end: substitute s - a = (b - a) t^2
         # (and likewise at b), which makes it smooth.
         g, wg = np.polynomial.legendre.leggauss(int(n_gauss))
         t, wt = 0.5 * (g + 1.0), 0.5 * wg
-        ea = (a[..., None] == edges[:, None, :]).any(axis=-1)
-        eb = (b[..., None] == edges[:, None, :]).any(axis=-1)
         if ea.any() or eb.any():
-            mid = 0.5 * (a + b)
-            cut = self.overlap(np.broadcast_to(x[:, None], mid.shape), mid) > 0.0
+            cut = self.overlap(xs, 0.5 * (a + b)) > 0.0
             ea, eb = ea & cut, eb & cut
         ea, eb = ea[..., None], eb[..., None]
         # phi(t) on [0, 1]: t (smooth), t^2 (root at a), 1 - (1-t)^2 (at b), 3t^2 - 2t^3 (both)
@@ -290,8 +299,8 @@ class _WingCut:
             eb, 2 * (1 - t), 1.0)))
         s = a[..., None] + (b - a)[..., None] * phi
         w = (b - a)[..., None] * dphi * wt
-        val = self.integrand(np.broadcast_to(x[:, None, None], s.shape), s)
-        return np.einsum("ijk,ijk->i", val, w)
+        val = self.integrand(np.broadcast_to(xs[:, None], s.shape), s)
+        return np.bincount(row, weights=np.einsum("jk,jk->j", val, w), minlength=x.size)
 
 
 def _pieces(bp):
@@ -300,6 +309,20 @@ def _pieces(bp):
     last = np.nanmax(bp, axis=1)
     bp = np.where(np.isnan(bp), last[:, None], bp)
     return bp[:, :-1], bp[:, 1:]
+
+
+def _compact(a, b):
+    """Pieces ``(a, b)`` (n_x, k) of :func:`_pieces` with those of zero length moved to the
+    end of their row and the columns no row needs dropped (the end padded by the row's
+    last breakpoint, so each row's breakpoints stay non-decreasing)."""
+    keep = b > a
+    width = max(int(keep.sum(axis=1).max(initial=0)), 1)
+    order = np.argsort(~keep, axis=1, kind="stable")[:, :width]
+    a, b = np.take_along_axis(a, order, 1), np.take_along_axis(b, order, 1)
+    pad = ~np.take_along_axis(keep, order, 1)
+    last = np.max(np.where(pad, -np.inf, b), axis=1, keepdims=True)
+    last = np.where(np.isfinite(last), last, b[:, :1])         # a row with no piece
+    return np.where(pad, last, a), np.where(pad, last, b)
 
 
 def _illinois(func, a, b, fa, fb, iters=80):

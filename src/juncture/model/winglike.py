@@ -210,6 +210,15 @@ class WingLike:
             self._poly[side] = (t, coefs)
         return self._poly[side]
 
+    def _cubic_rows(self, side):
+        """The coefficients of :meth:`_chord_cubics` as rows ((n_stations - 1) n_sections,
+        4): piece i of section k is row i n_sections + k."""
+        key = ("rows", side)
+        if key not in self._poly:
+            coefs = self._chord_cubics(side)[1]
+            self._poly[key] = np.ascontiguousarray(np.moveaxis(coefs, 0, -1)).reshape(-1, 4)
+        return self._poly[key]
+
     def point(self, span, fraction, side: Side = "upper", extrapolate=False):
         """Surface point at a span station and chord fraction, vectorised.
 
@@ -235,20 +244,23 @@ class WingLike:
         if side not in ("upper", "lower"):
             raise GeometryError(f"side must be 'upper' or 'lower', found {side!r}", self.name)
         t, coefs = self._chord_cubics(side)
+        rows = self._cubic_rows(side)
         fr, kk = f.ravel(), k.ravel()
         i = np.minimum(np.maximum(np.searchsorted(t, fr, side="right") - 1, 0), t.size - 2)
         h = (fr - t[i])
         # At the trailing edge the section's own ordinate, not the last cubic's round-off:
         # a sharp edge is then the same point on both sides, bit for bit.
         te = fr == t[-1]
+        last = self._offsets(side)[:, -1] if te.any() else None
         pts = []
         for kk_i in (kk, kk + 1):
-            c3, c2, c1, c0 = coefs[:, i, kk_i]
-            p = self.le[kk_i].copy()
-            p[:, 0] += self.chord[kk_i] * fr
+            # np.take on rows: several times faster than fancy indexing on the hot path
+            c3, c2, c1, c0 = np.take(rows, i * coefs.shape[2] + kk_i, axis=0).T
+            p = np.take(self.le, kk_i, axis=0)
+            p[:, 0] += np.take(self.chord, kk_i) * fr
             off = ((c3 * h + c2) * h + c1) * h + c0
-            if te.any():
-                off = np.where(te, self._offsets(side)[kk_i, -1], off)
+            if last is not None:
+                off = np.where(te, np.take(last, kk_i), off)
             p[:, self.thickness_axis] += off
             pts.append(p)
         w = lam.ravel()[:, None]
