@@ -83,3 +83,46 @@ def test_fuselage_rows_inside_a_high_wing_root_end_on_the_wing():
         assert rows.sum() >= 3
         ends = ends[rows]
         assert np.abs(wing_height(wing, side, ends) - ends[:, 2]).max() <= 1e-9 * L
+
+
+def _counted_cut(monkeypatch, x_of_f):
+    """Replace the trial-line cut by a given x(f) (points (x, 0, 0)); returns the call count."""
+    import juncture.intersect.stations as stations
+
+    calls = []
+
+    def cut(wing, body, side, f):
+        calls.append(len(f))
+        return np.stack([x_of_f(np.asarray(f)), 0 * f, 0 * f], axis=1)
+
+    monkeypatch.setattr(stations, "_cut", cut)
+    return stations._false_position, calls
+
+
+def test_a_station_in_a_jump_of_the_cut_stops_early_and_is_nan(monkeypatch):
+    """x(f) jumps by 5e-3 at f = 0.7 (the trial line's first crossing moves to another face):
+    a station in the gap has no root; the search stops once the bracket's secant is a
+    thousand times steeper than at the start (before: 40 rounds of cuts, closing in on the
+    jump to the last digit), and the stations with a root beside it are found."""
+    def x_of_f(f):
+        return 40.0 * f + np.where(f > 0.7, 5e-3, 0.0)
+
+    solve, calls = _counted_cut(monkeypatch, x_of_f)
+    x0 = np.array([28.0025, 20.0, 36.0])
+    got = solve(None, None, "upper", x0, np.zeros(3), np.ones(3), -x0, 40.005 - x0, 1e-11)
+    assert np.isnan(got[0]).all()
+    np.testing.assert_allclose(got[1:, 0], x0[1:], atol=1e-11)
+    assert len(calls) <= 20
+
+
+def test_a_steep_but_continuous_cut_is_still_solved(monkeypatch):
+    """A cut whose x(f) is 15 times steeper near the root than across the bracket (a line
+    meeting the body at a glancing angle) converges as before."""
+    def x_of_f(f):
+        return 10.0 * np.arctan(50.0 * (f - 0.4)) + 3.0 * f
+
+    solve, _ = _counted_cut(monkeypatch, x_of_f)
+    x0 = np.array([1.2 + 1e-3, 0.5])
+    ga, gb = x_of_f(np.zeros(2)) - x0, x_of_f(np.ones(2)) - x0
+    got = solve(None, None, "upper", x0, np.zeros(2), np.ones(2), ga, gb, 1e-11)
+    np.testing.assert_allclose(got[:, 0], x0, atol=1e-11)

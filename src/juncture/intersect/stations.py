@@ -29,6 +29,11 @@ ON_BODY = 1e-9
 #: (the row would nearly repeat that point's).
 MARGIN = 1e-9
 MAX_ITER = 40
+#: A bracket whose secant slope grows past this many times its first one holds a jump of
+#: the cut's x, not a root: the trial line's first crossing changes there (x0 in the gap
+#: between two faces, a joint's step). The search stops there (NaN) instead of closing in
+#: on the jump to the last digit (30 more rounds of cuts).
+JUMP = 1e3
 
 
 def plane_points(wing, body, side, points, x, either=False):
@@ -90,6 +95,8 @@ def _false_position(wing, body, side, x0, fa, fb, ga, gb, tol):
     act = np.arange(x0.size)
     fa, fb, ga, gb = (np.array(v, float) for v in (fa, fb, ga, gb))
     last = np.zeros(x0.size, int)      # which end was kept last time (-1 a, +1 b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        steep = JUMP * (gb - ga) / np.abs(fb - fa)
     for _ in range(MAX_ITER):
         if not act.size:
             break
@@ -108,8 +115,9 @@ def _false_position(wing, body, side, x0, fa, fb, ga, gb, tol):
         fa, ga = np.where(neg, fm, fa), np.where(neg, gm, ga)
         fb, gb = np.where(pos, fm, fb), np.where(pos, gm, gb)
         last = np.where(neg, 1, np.where(pos, -1, last))
-        keep = good & ~done & (np.abs(fb - fa) > 1e-15)
-        act, x0 = act[keep], x0[keep]
+        width = np.abs(fb - fa)
+        keep = good & ~done & (width > 1e-15) & (gb - ga < steep * width)
+        act, x0, steep = act[keep], x0[keep], steep[keep]
         fa, fb, ga, gb, last = fa[keep], fb[keep], ga[keep], gb[keep], last[keep]
     return out
 
