@@ -340,6 +340,28 @@ def test_candidate_pairs_are_every_overlapping_box_pair_once(seed):
     assert _candidate_pairs(v, tri[:1]).shape == (0, 2)
 
 
+@pytest.mark.parametrize("seed, n_few", [(0, 1), (1, 3), (2, 40), (3, 350)])
+def test_box_pairs_of_two_sets_are_every_overlapping_pair_once(seed, n_few):
+    # Oracle: every box of one set compared with every box of the other; sets of very
+    # different sizes (a few triangles without mirror images against half a surface).
+    from juncture.surface.check import _box_pairs
+
+    rng = np.random.default_rng(seed)
+    n = 700
+    centre = rng.uniform(-10.0, 10.0, (n, 1, 3))
+    size = 10.0 ** rng.uniform(-3.0, 1.0, (n, 1, 1))
+    v = (centre + size * rng.normal(size=(n, 3, 3))).reshape(-1, 3)
+    tri = np.arange(3 * n).reshape(n, 3)
+    ids = rng.permutation(n)
+    few, many = np.sort(ids[:n_few]), np.sort(ids[n_few:])
+    got = _box_pairs(v, tri, few, many)
+    every = _box_pairs_brute(v, tri)
+    want = {(i, j) for i, j in every if (i in set(few.tolist())) != (j in set(few.tolist()))}
+    assert len(np.unique(got, axis=0)) == len(got) and np.all(got[:, 0] < got[:, 1])
+    assert set(map(tuple, got.tolist())) == want and want
+    assert _box_pairs(v, tri, few[:0], many).shape == (0, 2)
+
+
 def _panel(rng, n, jitter):
     """n triangles, three points each, on the tilted plane p0 + s u + t v (exact dyadic
     floats), optionally moved off it by up to ``jitter``."""

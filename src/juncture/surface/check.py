@@ -161,10 +161,10 @@ def _candidate_pairs(v, tri):
     return np.stack([a[rows], b[rows]], axis=1)
 
 
-def _leaf_boxes(v, tri):
+def _leaf_boxes(v, tri, at_least=0):
     """Triangle boxes (lo, hi) in Morton order of their centres (10 bits an axis), padded
-    to a power of two with empty boxes (lo = inf > hi = -inf, overlapping nothing), and
-    that order."""
+    to a power of two (of at least ``at_least`` boxes) with empty boxes (lo = inf > hi =
+    -inf, overlapping nothing), and that order."""
     p = v[tri]
     lo, hi = p.min(axis=1), p.max(axis=1)
     centre = 0.5 * (lo + hi)
@@ -176,7 +176,7 @@ def _leaf_boxes(v, tri):
         for axis in range(3):
             code |= ((cell[:, axis] >> bit) & 1) << (3 * bit + axis)
     order = np.argsort(code, kind="stable")
-    size = 1 << max(1, int(np.ceil(np.log2(max(len(tri), 2)))))
+    size = 1 << max(1, int(np.ceil(np.log2(max(len(tri), at_least, 2)))))
     out_lo, out_hi = np.full((size, 3), np.inf), np.full((size, 3), -np.inf)
     out_lo[:len(tri)], out_hi[:len(tri)] = lo[order], hi[order]
     return out_lo, out_hi, order
@@ -254,14 +254,21 @@ def _search(v, tri, pairs):
 
 
 def _box_pairs(v, tri, few, many):
-    """Pairs (i < j) of a triangle of ``few`` and one of ``many`` whose boxes overlap."""
+    """Pairs (i < j) of a triangle of ``few`` and one of ``many`` whose boxes overlap: a
+    tree over each set (:func:`_leaf_boxes`, padded to the same size), walked together
+    level by level, a node pair opened only where the two boxes overlap."""
     if not len(few) or not len(many):
         return np.zeros((0, 2), np.int64)
-    p = v[tri]
-    lo, hi = p.min(axis=1), p.max(axis=1)
-    hit = np.all((lo[few, None] <= hi[None, many]) & (lo[None, many] <= hi[few, None]),
-                 axis=2)
-    a, b = few[np.nonzero(hit)[0]], many[np.nonzero(hit)[1]]
+    size = max(len(few), len(many))
+    lo_a, hi_a, order_a = _leaf_boxes(v, tri[few], size)
+    lo_b, hi_b, order_b = _leaf_boxes(v, tri[many], size)
+    i = j = np.zeros(1, np.int64)
+    for (la, ha), (lb, hb) in list(zip(_tree_boxes(lo_a, hi_a), _tree_boxes(lo_b, hi_b)))[1:]:
+        i, j = np.repeat(2 * i, 4) + np.tile([0, 0, 1, 1], len(i)), \
+            np.repeat(2 * j, 4) + np.tile([0, 1, 0, 1], len(j))
+        keep = np.all((la[i] <= hb[j]) & (lb[j] <= ha[i]), axis=1)
+        i, j = i[keep], j[keep]
+    a, b = few[order_a[i]], many[order_b[j]]
     return np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1)
 
 
