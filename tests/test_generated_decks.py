@@ -186,7 +186,8 @@ def test_intersection_points_lie_on_arbitrary_fuselages_as_juncture_models_them(
             assert own_offset(row) <= TOL, row
 
 
-@settings(max_examples=40, **FAST)
+# 20 here, 300 in the slow profile (test_slow_canards_tails_and_fins_keep_...)
+@settings(max_examples=20, **FAST)
 @given(empennage_decks(canards="canard+tail", section="arbitrary"))
 # Twin fins standing partly on the fuselage, partly on (or through) a tail: the fuselage's
 # line trimmed the fins' tips, so the root kept its input points inside the fuselage
@@ -199,6 +200,11 @@ def test_canards_tails_and_fins_keep_the_part_outside_the_fuselage(example):
     lies deep in a wide fuselage meets it nearer its tip than its root, and once kept the
     buried part (up to 0.035 L inside on 4 of 60 generated airplanes). A fin's networks do
     not enter a canard or tail either (the deck's own surfaces, tests.deckgen)."""
+    assert_outside_the_fuselage(example)
+
+
+def assert_outside_the_fuselage(example):
+    """The check of :func:`test_canards_tails_and_fins_keep_the_part_outside_the_fuselage`."""
     text, desc = example
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -311,6 +317,13 @@ def test_the_reference_wing_reproduces_its_own_deck_points():
 # ------------------------------------------------------------------------------------------
 # Slow profile: hundreds of decks; known failure classes stated as xfail
 # ------------------------------------------------------------------------------------------
+@pytest.mark.slow
+@settings(max_examples=300, **SLOW)
+@given(empennage_decks(canards="canard+tail", section="arbitrary"))
+def test_slow_canards_tails_and_fins_keep_the_part_outside_the_fuselage(example):
+    assert_outside_the_fuselage(example)
+
+
 @pytest.mark.slow
 @settings(max_examples=300, **SLOW)
 @given(decks())
