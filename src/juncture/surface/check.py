@@ -153,12 +153,21 @@ def _candidate_pairs(v, tri):
     i = j = np.zeros(1, np.int64)
     for lo_k, hi_k in _tree_boxes(lo, hi)[1:]:
         i, j = _children(i, j)
-        keep = np.all((lo_k[i] <= hi_k[j]) & (lo_k[j] <= hi_k[i]), axis=1)
+        keep = _overlap(lo_k, hi_k, i, lo_k, hi_k, j)
         i, j = i[keep], j[keep]
     a, b = order[i[i != j]], order[j[i != j]]
     a, b = np.minimum(a, b), np.maximum(a, b)
     rows = np.lexsort((b, a))
     return np.stack([a[rows], b[rows]], axis=1)
+
+
+def _overlap(lo_a, hi_a, i, lo_b, hi_b, j):
+    """(k,) bool: box i of (lo_a, hi_a) overlaps box j of (lo_b, hi_b) (np.take: several
+    times faster than fancy indexing on these (n, 3) arrays)."""
+    la, ha = np.take(lo_a, i, axis=0), np.take(hi_a, i, axis=0)
+    lb, hb = np.take(lo_b, j, axis=0), np.take(hi_b, j, axis=0)
+    ok = (la <= hb) & (lb <= ha)
+    return ok[:, 0] & ok[:, 1] & ok[:, 2]
 
 
 def _leaf_boxes(v, tri, at_least=0):
@@ -266,7 +275,7 @@ def _box_pairs(v, tri, few, many):
     for (la, ha), (lb, hb) in list(zip(_tree_boxes(lo_a, hi_a), _tree_boxes(lo_b, hi_b)))[1:]:
         i, j = np.repeat(2 * i, 4) + np.tile([0, 0, 1, 1], len(i)), \
             np.repeat(2 * j, 4) + np.tile([0, 1, 0, 1], len(j))
-        keep = np.all((la[i] <= hb[j]) & (lb[j] <= ha[i]), axis=1)
+        keep = _overlap(la, ha, i, lb, hb, j)
         i, j = i[keep], j[keep]
     a, b = few[order_a[i]], many[order_b[j]]
     return np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1)
