@@ -718,17 +718,24 @@ class ArbitraryBody:
     def _project(self, p):
         """Points (q, 3) onto the segments of their half-sections.
 
-        Returns the pair ``k`` (q,), segment starts ``a`` and steps ``d`` (q, M-1, 2), the
-        points in the section plane ``q`` (q, 1, 2) with |y| (the section is symmetric), the
-        clamped segment parameters ``t`` and squared distances ``dist2`` (q, M-1).
+        Returns the pair ``k`` (q,), segment starts ``a`` and steps ``d`` (y and z parts,
+        each (q, M-1)), the points in the section plane ``q`` (y, z: each (q, 1)) with |y|
+        (the section is symmetric), the clamped segment parameters ``t`` and squared
+        distances ``dist2`` (q, M-1). Kept apart by coordinate: the same numbers as the
+        (..., 2) arrays summed over their last axis, without those two-term reductions.
         """
         k, w = self._pair(p[:, 0])
-        sec = self._blend(k, w[:, None, None])  # (q, M, 2)
-        a, d = sec[:, :-1], np.diff(sec, axis=1)
-        q = np.stack([np.abs(p[:, 1]), p[:, 2]], -1)[:, None, :]
-        len2 = np.maximum((d * d).sum(-1), 1e-300)
-        t = np.clip(((q - a) * d).sum(-1) / len2, 0.0, 1.0)
-        return k, a, d, q, t, ((q - a - t[..., None] * d) ** 2).sum(-1)
+        w = w[:, None]
+        a, b = np.take(self._a, k, axis=0), np.take(self._b, k, axis=0)   # (q, M, 2)
+        ay, az = ((1.0 - w) * a[..., i] + w * b[..., i] for i in (0, 1))
+        dy, dz = np.diff(ay, axis=1), np.diff(az, axis=1)
+        ay, az = ay[:, :-1], az[:, :-1]
+        qy, qz = np.abs(p[:, 1])[:, None], p[:, 2][:, None]
+        ey, ez = qy - ay, qz - az
+        len2 = np.maximum(dy * dy + dz * dz, 1e-300)
+        t = np.clip((ey * dy + ez * dz) / len2, 0.0, 1.0)
+        ry, rz = ey - t * dy, ez - t * dz
+        return k, (ay, az), (dy, dz), (qy, qz), t, ry * ry + rz * rz
 
     def parameter_of(self, points):
         """Surface parameter s (0 bottom, 1 top) of points on the surface: the inverse of
@@ -798,12 +805,10 @@ class ArbitraryBody:
         p = np.asarray(points, float)
         shape = p.shape[:-1]
         p = p.reshape(-1, 3)
-        _, a, d, q, _, dist2 = self._project(p)
+        _, (ya, za), (dy, dz), (qy, qz), _, dist2 = self._project(p)
         dist = np.sqrt(dist2.min(-1))
         # Inside test: crossing number against the half outline closed along y = 0.
-        ya, za = a[..., 0], a[..., 1]
-        yb, zb = ya + d[..., 0], za + d[..., 1]
-        qy, qz = q[..., 0], q[..., 1]
+        yb, zb = ya + dy, za + dz
         crosses = ((za > qz) != (zb > qz)) & (
             qy < ya + (qz - za) * (yb - ya) / np.where(zb != za, zb - za, 1.0))
         inside = (crosses.sum(-1) % 2 == 1) & (p[:, 0] > self.x[0]) & (p[:, 0] < self.x[-1])
