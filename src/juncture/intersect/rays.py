@@ -63,8 +63,9 @@ def polyline_points(lines, u):
     m, n = lines.shape[:2]
     k = np.minimum(np.maximum(np.floor(u).astype(int), 0), n - 2)
     lam = (u - k)[..., None]
-    rows = np.arange(m).reshape((m,) + (1,) * (u.ndim - 1))
-    a, b = lines[rows, k], lines[rows, k + 1]
+    at = np.arange(m).reshape((m,) + (1,) * (u.ndim - 1)) * n + k
+    flat = lines.reshape(m * n, 3)
+    a, b = np.take(flat, at, axis=0), np.take(flat, at + 1, axis=0)   # lines[rows, k (+ 1)]
     return a + lam * (b - a)
 
 

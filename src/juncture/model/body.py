@@ -657,7 +657,8 @@ class ArbitraryBody:
         x = self.x
         k = np.minimum(np.maximum(np.searchsorted(x, xq, side="right") - 1, 0), x.size - 2)
         h = x[k + 1] - x[k]  # > 0: side="right" never lands on a repeated joint's pair
-        w = np.clip((xq - x[k]) / np.where(h > 0, h, 1.0), 0.0, 1.0)
+        # np.minimum/maximum: np.clip's overhead shows in the root finders' inner loops.
+        w = np.minimum(np.maximum((xq - x[k]) / np.where(h > 0, h, 1.0), 0.0), 1.0)
         return k, w
 
     def _sections_at(self, xq):
@@ -728,12 +729,12 @@ class ArbitraryBody:
         w = w[:, None]
         a, b = np.take(self._a, k, axis=0), np.take(self._b, k, axis=0)   # (q, M, 2)
         ay, az = ((1.0 - w) * a[..., i] + w * b[..., i] for i in (0, 1))
-        dy, dz = np.diff(ay, axis=1), np.diff(az, axis=1)
+        dy, dz = ay[:, 1:] - ay[:, :-1], az[:, 1:] - az[:, :-1]
         ay, az = ay[:, :-1], az[:, :-1]
         qy, qz = np.abs(p[:, 1])[:, None], p[:, 2][:, None]
         ey, ez = qy - ay, qz - az
         len2 = np.maximum(dy * dy + dz * dz, 1e-300)
-        t = np.clip((ey * dy + ez * dz) / len2, 0.0, 1.0)
+        t = np.minimum(np.maximum((ey * dy + ez * dz) / len2, 0.0), 1.0)
         ry, rz = ey - t * dy, ez - t * dz
         return k, (ay, az), (dy, dz), (qy, qz), t, ry * ry + rz * rz
 
