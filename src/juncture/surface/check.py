@@ -273,8 +273,8 @@ def _box_pairs(v, tri, few, many):
     lo_b, hi_b, order_b = _leaf_boxes(v, tri[many], size)
     i = j = np.zeros(1, np.int64)
     for (la, ha), (lb, hb) in list(zip(_tree_boxes(lo_a, hi_a), _tree_boxes(lo_b, hi_b)))[1:]:
-        i, j = np.repeat(2 * i, 4) + np.tile([0, 0, 1, 1], len(i)), \
-            np.repeat(2 * j, 4) + np.tile([0, 1, 0, 1], len(j))
+        i = (2 * i[:, None] + [0, 0, 1, 1]).ravel()     # the four pairs of their children
+        j = (2 * j[:, None] + [0, 1, 0, 1]).ravel()
         keep = _overlap(la, ha, i, lb, hb, j)
         i, j = i[keep], j[keep]
     a, b = few[order_a[i]], many[order_b[j]]
