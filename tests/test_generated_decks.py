@@ -318,6 +318,10 @@ def test_the_reference_wing_reproduces_its_own_deck_points():
 # Slow profile: hundreds of decks; known failure classes stated as xfail
 # ------------------------------------------------------------------------------------------
 @pytest.mark.slow
+@pytest.mark.xfail(strict=False, raises=AssertionError, reason=(
+    "a fin's outboard network up to 9.2e-4 L inside an arbitrary fuselage (found in session "
+    "25 with hypothesis seed 3939, already so at its start: deck_from_seed(1096, ('fins', "
+    "'canards'), canards='canard+tail', section='arbitrary'), not yet traced)"))
 @settings(max_examples=300, **SLOW)
 @given(empennage_decks(canards="canard+tail", section="arbitrary"))
 def test_slow_canards_tails_and_fins_keep_the_part_outside_the_fuselage(example):
