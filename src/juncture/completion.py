@@ -205,7 +205,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
     the fuselage are solved again.
     """
     from .intersect import find_intersections
-    from .intersect.pairs import intersect_pair
+    from .intersect.pairs import intersect_pair, settle_pairs
     from .model import WingLike
     from .surface.component_networks import nacelle_network, trimmed_networks
 
@@ -213,8 +213,8 @@ def _other_components(cfg, wing, body, opts, log, known=None):
     if known is None:
         found = find_intersections(work, explicit=opts.pairs, skip={(wing.name, body.name)})
     else:
-        found = {p: (intersect_pair(work, p) if p.b == body.name else res)
-                 for p, res in known.items()}
+        found = settle_pairs(work, {p: (intersect_pair(work, p) if p.b == body.name else res)
+                                    for p, res in known.items()})
     inters, by_comp, pylons, attached, traces = {}, {}, {}, [], []
     for pair, (up, lo) in found.items():
         if pair.b == wing.name and pair.role in ("upper", "lower"):

@@ -211,3 +211,29 @@ def test_a_sharp_edge_meets_the_body_at_one_point_on_both_sides():
         assert same[0] and same[-1]
         assert np.array_equal(up.points[same], lo.points[same])
         assert np.array_equal(up.u[same], lo.u[same])
+
+
+def test_a_canted_fin_beside_the_body_at_its_centre_height_meets_it_below():
+    """A fin canted 26.6 deg outwards on a cylinder of radius 1 (axis z = 0): extended down,
+    each outboard lofting line is still 1.02-1.065 from the axis at the centre height z = 0
+    (where the search for a fin's crossing used to stop) and enters the cylinder below it
+    (its closest approach to the axis is at most 0.955). Expected: the larger root of the
+    line's quadratic with the cylinder, y^2 + z^2 = 1 (the first reached from the tip)."""
+    body = CircularBody("body", [0.0, 10.0, 80.0], [0.0, 1.0, 1.0], axial="linear")
+    xc = np.array([0.0, 25.0, 50.0, 75.0, 100.0])
+    half = np.array([[0.0, 0.3, 0.5, 0.3, 0.0]] * 2)  # % chord
+    le = np.array([[40.0, 1.52, 1.0], [42.0, 3.52, 5.0]])
+    fin = WingLike("fin 1", "fin", le, [8.0, 4.0], xc, half, half)
+    for side in ("upper", "lower"):
+        res = intersect_body(fin, body, side)
+        assert res.found.all()
+        a, b = fin.lofting_lines(side)[:, 0], fin.lofting_lines(side)[:, 1]
+        d = b - a
+        qa = d[:, 1] ** 2 + d[:, 2] ** 2
+        qb = 2 * (a[:, 1] * d[:, 1] + a[:, 2] * d[:, 2])
+        qc = a[:, 1] ** 2 + a[:, 2] ** 2 - 1.0
+        t = (-qb + np.sqrt(qb ** 2 - 4 * qa * qc)) / (2 * qa)
+        expected = a + t[:, None] * d
+        if side == "upper":  # outboard: every line below the centre height
+            assert np.all(expected[:, 2] < 0)
+        np.testing.assert_allclose(res.points, expected, rtol=0, atol=1e-12 * body.length)

@@ -22,7 +22,8 @@ from ..errors import ConvergenceError, GeometryError
 from ..model import ArbitraryBody, CircularBody, WingLike
 from .rays import SurfaceBound, find_crossings
 
-__all__ = ["BodyIntersection", "intersect_body", "intersect_body_both", "side_label"]
+__all__ = ["BodyIntersection", "intersect_body", "intersect_body_both", "settle_past_centre",
+           "side_label"]
 
 
 def side_label(wing, side):
@@ -70,6 +71,50 @@ class BodyIntersection:
     iterations: int
     residual: np.ndarray
     log: tuple = ()
+    past_centre: np.ndarray = None
+
+
+#: Log words of a fin's line found past the body's centre height (:func:`settle_past_centre`).
+_PAST = "passes beside"
+
+
+def settle_past_centre(inter, body, others, lines):
+    """``inter`` (a fin's or pylon's intersection with ``body``) keeping a crossing found
+    past the body's centre height (:func:`_past_centre`) only where the line would otherwise
+    end inside ``body``: at the root-half point of ``others`` (its intersections with other
+    components on the same side) nearest its tip, or at its input root point (``lines[:,
+    0]``) if it meets none. A canted fin's trailing edge passing beside a tail cone onto a
+    tail inside it meets the cone there; one whose root overhangs the cone is not extended
+    down its side (its root is kept and named, :mod:`juncture.surface.component_networks`).
+    """
+    from dataclasses import replace
+
+    past = inter.past_centre
+    if past is None or not past.any():
+        return inter
+    n = lines.shape[1]
+    end, best = np.array(lines[:, 0], float), np.full(len(lines), -np.inf)
+    for other in others:
+        ou = np.asarray(other.u, float)
+        ok = np.asarray(other.found, bool) & (ou < 0.5 * (n - 1)) & (ou > best)
+        if other.past_centre is not None:
+            ok &= ~other.past_centre
+        end[ok], best[ok] = np.asarray(other.points, float)[ok], ou[ok]
+    size = 1e-9 * max(float(body.length), 1.0)
+    drop = past & ~(body.signed_distance(np.where(past[:, None], end, 0.0)) < -size)
+    if not drop.any():
+        return inter
+    found, pts, u = inter.found.copy(), inter.points.copy(), inter.u.copy()
+    theta, residual = inter.theta.copy(), inter.residual.copy()
+    found[drop] = False
+    for a in (pts, u, theta, residual):
+        a[drop] = np.nan
+    gone = {f"lofting line {j + 1} {_PAST}" for j in np.flatnonzero(drop)}
+    log = [line for line in inter.log if not any(g in line for g in gone)]
+    log[-1:-1] = [f"{inter.name}: lofting line {j + 1} misses {body.name}"
+                  for j in np.flatnonzero(drop)]
+    return replace(inter, points=pts, u=u, found=found, theta=theta, residual=residual,
+                   log=tuple(log), past_centre=past & ~drop)
 
 
 def _error_function(body):
@@ -99,6 +144,50 @@ def _u_axis(wing, body, lines):
     else:
         c = body.center_at(lines[:, 0, 0])[:, 1]
     return (c - s[0]) / (s[1] - s[0])
+
+
+def _span_extent(body, wing):
+    """Lowest and highest coordinate of ``body`` along ``wing``'s span axis (its section
+    points, widened by a tenth of the range: circular sections bulge between stations)."""
+    pts = np.asarray(body.cross_sections(), float).reshape(-1, 3)[:, wing.span_axis]
+    lo, hi = float(np.nanmin(pts)), float(np.nanmax(pts))
+    pad = 0.1 * (hi - lo)
+    return lo - pad, hi + pad
+
+
+def _past_centre(wing, body, lines, cr, error, bound, samples_per_section):
+    """A fin's or pylon's lines that miss ``body`` above its centre height, searched on past
+    it to the far side of the body (issue 11).
+
+    The centre height is no plane of symmetry for a fin: a canted fin's trailing-edge lines,
+    passing beside a narrowing tail cone, can reach the body below its centre (and another
+    surface, a tail, inside it). Only the lines that missed are searched again, over the whole
+    line down to the body's far extent, so every line found before keeps its point bit for
+    bit; a root found is a root of the same surface equation, the first from the tip.
+    Returns the crossings and which lines were found so (kept only where the line would
+    otherwise end inside the body: :func:`settle_past_centre`)."""
+    from dataclasses import replace
+
+    from .rays import root_tolerance
+
+    miss = np.flatnonzero(~cr.found)
+    s = wing.span_stations
+    far = min((v - s[0]) / (s[1] - s[0]) for v in _span_extent(body, wing))
+    again = find_crossings(lines[miss], error, min(far, 0.0), samples_per_section,
+                           lipschitz=bound, atol=root_tolerance(lines))
+    got = miss[again.found]
+    past = np.zeros(len(lines), bool)
+    past[got] = True
+    if not got.size:
+        return cr, past
+    fields = {}
+    for name in ("u", "points", "found", "n_crossings", "residual", "gradient", "jumps"):
+        old, new = getattr(cr, name), getattr(again, name)
+        if old is not None and new is not None:
+            old = old.copy()
+            old[got] = new[again.found]
+            fields[name] = old
+    return replace(cr, iterations=cr.iterations + again.iterations, **fields), past
 
 
 def intersect_body(wing: WingLike, body, side="upper", samples_per_section=None, hint=None):
@@ -172,6 +261,9 @@ def _intersect(wing, body, sides, samples_per_section, hints):
         raise ConvergenceError(f"the intersection with {body.name} did not converge ({which}):"
                                " the line grazes the body; move one of them slightly",
                                wing.name) from None
+    past = np.zeros(len(lines), bool)
+    if wing.span_axis != 1 and not cr.found.all():
+        cr, past = _past_centre(wing, body, lines, cr, error, bound, samples_per_section)
     tip_inside = cr.start_error <= 0  # NaN (a hinted line) compares False
     if np.any(tip_inside):
         j = int(np.argmax(tip_inside))
@@ -203,14 +295,19 @@ def _intersect(wing, body, sides, samples_per_section, hints):
                 theta[found] = _body_angle(body, pts[found])
         name = f"{wing.name}/{body.name} {side_label(wing, side)}"
         log = []
-        for j in np.flatnonzero(cr.n_crossings[sl] >= 2):
+        for j in np.flatnonzero((cr.n_crossings[sl] >= 2) & ~past[sl]):
             log.append(f"{name}: lofting line {j + 1} crosses {body.name} "
                        f"{int(cr.n_crossings[sl][j])} times; took the first reached coming "
                        f"inboard (u = {u[j]:.6g})")
         for j in np.flatnonzero(~found):
             log.append(f"{name}: lofting line {j + 1} misses {body.name}")
-        log.append(f"{name}: {int(found.sum())} of {m} lines solved in {cr.iterations} "
+        for j in np.flatnonzero(past[sl]):
+            log.append(f"{name}: lofting line {j + 1} {_PAST} {body.name} at its centre "
+                       f"height and meets it below (u = {u[j]:.6g}), where it would end "
+                       f"inside {body.name} otherwise")
+        log.append(f"{name}: {int((found & ~past[sl]).sum())} of {m} lines solved in "
+                   f"{cr.iterations} "
                    f"iterations, max residual {np.nanmax(cr.residual[sl], initial=0.0):.3g}")
         out.append(BodyIntersection(name, side, pts, u, found, theta, cr.n_crossings[sl],
-                                    cr.iterations, cr.residual[sl], tuple(log)))
+                                    cr.iterations, cr.residual[sl], tuple(log), past[sl]))
     return out

@@ -20,7 +20,7 @@ import numpy as np
 
 from ..errors import GeometryError
 from ..model import ArbitraryBody, CircularBody, WingLike
-from .body import intersect_body_both, side_label
+from .body import intersect_body_both, settle_past_centre, side_label
 from .winglike import intersect_winglike
 
 __all__ = ["Pair", "touching_pairs", "find_intersections", "side_label", "intersect_pair"]
@@ -99,14 +99,26 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
     stated = {p.a for p in pairs}
     skip = {tuple(s) for s in skip}
     out = {p: intersect_pair(cfg, p) for p in pairs if (p.a, p.b) not in skip}
+    auto = _candidates(cfg, stated, skip, margin)
+    settled = settle_pairs(cfg, {**out, **auto})
+    out = {p: settled[p] for p in out}
+    auto = {p: settled[p] for p in auto if any(r.found.any() for r in settled[p])}
     for p, res in out.items():
         if not any(r.found.any() for r in res):
             raise GeometryError(f"the pair ({p.a!r}, {p.b!r}, {p.role!r}) was stated but "
                                 f"no lofting line of {p.a} meets {p.b} (as role {p.role!r}); "
                                 "remove the pair or move the components so that they touch",
                                 p.a)
-    boxes = {}
-    auto = {}
+    out.update(_first_reached(auto))
+    return out
+
+
+def _candidates(cfg, stated, skip, margin):
+    """Each pair of ``cfg`` whose boxes overlap (by ``margin``) and whose lofting lines meet
+    the other component (a fin meeting a body only past its centre height included, to be
+    settled by :func:`settle_pairs`), with its intersections; the first role that meets of
+    a fin on a wing."""
+    boxes, auto = {}, {}
 
     def box(c):  # built on first use: the networks are not free
         if c.name not in boxes:
@@ -141,7 +153,24 @@ def find_intersections(cfg, margin=0.02, explicit=(), skip=()):
                         _refuse_passing_through(a, b, box(b))
                     auto[pair] = res
                     break
-    out.update(_first_reached(auto))
+    return auto
+
+
+def settle_pairs(cfg, found):
+    """``found`` (pair to intersections) with each fin's or pylon's crossings past a body's
+    centre height kept only where its line would otherwise end inside that body
+    (:func:`.body.settle_past_centre`, against the pair's other intersections)."""
+    out = dict(found)
+    for pair, res in found.items():
+        if not any(getattr(r, "past_centre", None) is not None and r.past_centre.any()
+                   for r in res):
+            continue
+        comp = cfg[pair.a]
+        others = [r for q, r in found.items() if q.a == pair.a and q != pair]
+        out[pair] = tuple(
+            settle_past_centre(r, cfg[pair.b], [o[k] for o in others],
+                               comp.lofting_lines(side))
+            for k, (r, side) in enumerate(zip(res, ("upper", "lower"))))
     return out
 
 
