@@ -340,3 +340,29 @@ def test_a_fin_root_overhanging_the_fuselage_is_refused_naming_its_lines():
     for side in ("upper", "lower"):
         outside = cfg["body"].signed_distance(cfg["fin 2"].lofting_lines(side)[:, 0]) > 0
         assert outside[6:].all() and not outside[:4].any()
+
+
+def test_a_fin_standing_partly_on_the_fuselage_partly_on_a_tail_is_refused_by_name():
+    """A generated canted twin fin (deck_from_seed(1096, ...), session 26) whose root stands
+    on a narrowing tail cone forward and on the tail aft: the root line crosses the tail /
+    fuselage junction, a point where three surfaces meet that juncture does not build. mesh
+    refuses in one line naming the fin, both hosts and what to change, before what it leads
+    to. Oracle: the fin's outboard root points lie on the fuselage (its own signed distance,
+    0 to 1e-9 L) forward and off it (outside by more than 1e-3 L) aft."""
+    from tests.deckgen import deck_from_seed, read_text
+
+    text, desc = deck_from_seed(1096, ("fins", "canards"), canards="canard+tail",
+                                section="arbitrary")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(read_text(text))
+    root = np.asarray(geo.networks["fin 1 outboard"])[0]
+    d = geo.configuration["body"].signed_distance(root) / desc["length"]
+    assert (np.abs(d) <= 1e-9).sum() >= 3 and (d > 1e-3).sum() >= 2
+    with pytest.raises(jc.GeometryError) as err:
+        jc.mesh(geo, min_angle=0)
+    msg = str(err.value)
+    assert "\n" not in msg
+    assert msg.startswith("the completed surface is not closed and valid: fin 1 stands partly "
+                          "on body and partly on tail 1: its root crosses their junction")
+    assert "move fin 1 so that its root lies on one of them" in msg

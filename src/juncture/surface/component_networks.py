@@ -28,7 +28,7 @@ from ..intersect.body import side_label
 from ..intersect.winglike import wing_parameters
 
 __all__ = ["interpolated", "trimmed_networks", "nacelle_network", "orient_winglike",
-           "trace_curve", "add_trace_curves", "kept_roots"]
+           "trace_curve", "add_trace_curves", "kept_roots", "split_roots"]
 
 
 def interpolated(wing, count):
@@ -123,10 +123,16 @@ def _end_line(wing, side, inters, at_root, log, hosts):
     lines = wing.lofting_lines(side)
     pts = np.full((lines.shape[0], 3), np.nan)
     u = np.full(lines.shape[0], np.nan)
-    for inter in inters:
+    source = np.full(lines.shape[0], -1)
+    for k, inter in enumerate(inters):
         v = np.asarray(inter.u, float)
         take = np.asarray(inter.found, bool) & ~((u >= v) if at_root else (u <= v))
-        pts[take], u[take] = np.asarray(inter.points, float)[take], v[take]
+        pts[take], u[take], source[take] = np.asarray(inter.points, float)[take], v[take], k
+    if at_root and len(set(source[source >= 0].tolist())) > 1:
+        on = "; ".join(f"{inters[k].name.split('/', 1)[1].rsplit(' ', 1)[0]}: lofting lines "
+                       + ", ".join(str(j + 1) for j in np.flatnonzero(source == k))
+                       for k in sorted(set(source[source >= 0].tolist())))
+        log.append(f"{wing.name} {side_label(wing, side)}: {_SPLIT} {on}")
     missed = np.isnan(u)
     end = 0 if at_root else -1
     pts[missed], u[missed] = lines[missed, end], (0.0 if at_root else wing.n_sections - 1.0)
@@ -145,6 +151,24 @@ def _end_line(wing, side, inters, at_root, log, hosts):
 #: The log line above for a root, read back by :func:`kept_roots` (kept beside the message).
 _KEPT_ROOT = re.compile(r"(.+?)/(.+?) (?:outboard|inboard|upper|lower)\b.*?: lofting line "
                         r"(\d+) never meets the other components?; its input root point is kept")
+
+
+#: Log words of a root trimmed by two components or more, read back by :func:`split_roots`.
+_SPLIT = "its root stands on more than one component, line by line:"
+
+
+def split_roots(log):
+    """{component: [the components its root stands on]} for roots trimmed by more than one
+    (a fin standing partly on the fuselage, partly on a tail), read from the ``log``."""
+    out = {}
+    for line in log:
+        head, _, rest = line.partition(f": {_SPLIT} ")
+        if rest:
+            name = head.rsplit(" ", 1)[0]
+            hosts = [part.rsplit(": lofting lines", 1)[0] for part in rest.split("; ")]
+            out.setdefault(name, [])
+            out[name] += [h for h in hosts if h not in out[name]]
+    return out
 
 
 def kept_roots(log):

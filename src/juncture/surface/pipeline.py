@@ -113,8 +113,9 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     report = None
     if check:
         report = check_mesh(surface.vertices, surface.triangles)
-        _refuse(geometry, surface, _kept_roots(geometry, surface, report) + report.failures()
-                + _crossing_surfaces(surface, report))
+        _refuse(geometry, surface, report.failures() + _crossing_surfaces(surface, report),
+                _kept_roots(geometry, surface, report) + _split_roots(geometry, surface,
+                                                                      report))
     if failures:
         _not_kept(failures, stacklevel=4)
     return surface, report
@@ -168,8 +169,31 @@ def _kept_roots(geometry, surface, report):
     return out
 
 
-def _refuse(geometry, surface, failures):
-    """A one-line GeometryError for a surface that fails, the cause first where known."""
+def _split_roots(geometry, surface, report):
+    """[one line per component whose root stands on two components or more, line by line,
+    and whose surfaces cross something or border an open loop] (the cause, first), or []."""
+    from .component_networks import split_roots
+
+    split = split_roots(getattr(geometry, "log", ()))
+    if not split:
+        return []
+    rows = [] if report.pairs is None else [surface.surface[np.asarray(report.pairs).ravel()]]
+    loops = [v for v in surface.open_loops]
+    if loops:
+        near = np.isin(surface.triangles, np.concatenate(loops)).any(axis=1)
+        rows.append(surface.surface[near])
+    if not rows:
+        return []
+    names = set(np.asarray(surface.surfaces)[np.concatenate(rows)].tolist())
+    return [f"{a} stands partly on {' and partly on '.join(hosts)}: its root crosses their "
+            "junction, where three surfaces meet at a point juncture does not construct; "
+            f"move {a} so that its root lies on one of them"
+            for a, hosts in split.items() if any(n.startswith(f"{a} ") for n in names)]
+
+
+def _refuse(geometry, surface, failures, causes=()):
+    """A one-line GeometryError for a surface that fails, the cause first where known
+    (``causes``: lines naming it, put before what it leads to)."""
     from ..errors import GeometryError
 
     if surface.open_loops:
@@ -177,6 +201,7 @@ def _refuse(geometry, surface, failures):
                            "two sides do not carry the same points)")
     if not failures:
         return
+    failures = list(causes) + failures
     overlap = overlapping_regions(geometry)
     if overlap:  # the cause, in the user's terms, before what it leads to
         raise GeometryError("the completed surface is not closed and valid: "
