@@ -560,3 +560,30 @@ def test_slow_every_drop_kept_leaves_the_worse_cavity(monkeypatch):
     monkeypatch.setattr(rm, "_worst", lambda *args: 180.0)
     surface = jc.mesh(_geo(PYRAMID_NOSE))
     assert triangle_angles(surface.vertices, surface.triangles).min() < 5.0
+
+
+def test_a_block_that_charts_only_in_pieces_keeps_only_the_pieces_that_do_not():
+    """A generated airplane (tests/data/generated/README.md, seed 2424 draw 17) whose
+    fuselage tapers over 88 ft to a section 0.0005 ft across: its lower block does not
+    chart whole, nor does one of its pieces, and the whole block kept its network
+    triangles (174 of no area at the tail). Now the pieces that chart are re-triangulated.
+    Oracles: trimesh (closed, consistently wound) and the corner angles computed here from
+    the edge lengths (law of cosines): none at the tail under 1 deg (was 3e-4 deg), 98 % of
+    the fuselage aft of the kept piece (x > 121) at 20 deg or more."""
+    import trimesh
+
+    surface = jc.mesh(_geo(DATA / "generated" / "remesh"
+                           / "fuselage_tapering_to_a_rounding_sized_section.inp"))
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    p = surface.vertices[surface.triangles]
+    a, b, c = (np.linalg.norm(p[:, (k + 1) % 3] - p[:, (k + 2) % 3], axis=1) for k in range(3))
+    cos = np.clip(np.stack([(b * b + c * c - a * a) / (2 * b * c),
+                            (c * c + a * a - b * b) / (2 * c * a),
+                            (a * a + b * b - c * c) / (2 * a * b)], 1), -1.0, 1.0)
+    smallest = np.degrees(np.arccos(cos)).min(axis=1)
+    body = np.isin(surface.surface, [k for k, n in enumerate(surface.surfaces)
+                                     if n.startswith("body") and not n.endswith("cap")])
+    aft = body & (p[:, :, 0].mean(axis=1) > 121.0)
+    assert smallest[aft & (p[:, :, 0].mean(axis=1) > 208.0)].min() >= 1.0
+    assert np.mean(smallest[aft] >= 20.0) >= 0.98

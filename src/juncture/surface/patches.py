@@ -172,7 +172,7 @@ def _halves(mesh, rows):
     return [rows[low], rows[~low]]
 
 
-def charts(mesh, rows, depth=None):
+def charts(mesh, rows, depth=None, kept=None):
     """The :class:`Patch` charts of the triangles ``rows``, or None if they cannot be
     charted: one (:func:`chart`), or where its scale varies more than :data:`SPREAD`
     (a pod pointed at both ends with a pylon's or wing's footprint cut out of it charts as a
@@ -180,21 +180,39 @@ def charts(mesh, rows, depth=None):
     3-D) or it does not chart at all (LSCM folds a triangle where a wing's upper surface
     turns down to its leading edge beside a fillet) the charts of its halves
     (:func:`_halves`), each split again the same way, at most :data:`SPLITS` times, as long
-    as every piece charts."""
+    as every piece charts.
+
+    With a list ``kept``, a patch that does not chart at all is charted piece by piece: the
+    rows of each piece that still does not chart (the slivers of a fuselage tapering to a
+    section a rounding's size across, whose flat triangles LSCM folds) are appended to it,
+    the others charted (the result may be empty)."""
     depth = SPLITS if depth is None else depth
     patch = chart(mesh, rows)
     if depth == 0 or (patch is not None and patch.spread <= SPREAD):
-        return None if patch is None else [patch]
+        return _leaf(patch, rows, kept)
     parts = [part for half in _halves(mesh, rows) or [] for part in _connected(mesh, half)]
     if len(parts) < 2 or min(map(len, parts)) < MINIMUM:
-        return None if patch is None else [patch]
-    out = []
+        return _leaf(patch, rows, kept)
+    out, held = [], ([] if patch is None and kept is not None else None)
     for part in parts:
-        got = charts(mesh, part, depth - 1)
+        got = charts(mesh, part, depth - 1, held)
         if got is None:
             return None if patch is None else [patch]
         out.extend(got)
+    if held:
+        kept.extend(held)
     return out
+
+
+def _leaf(patch, rows, kept):
+    """:func:`charts` of a piece not split further: its chart, else (with ``kept``) none,
+    its rows kept."""
+    if patch is not None:
+        return [patch]
+    if kept is None:
+        return None
+    kept.append(rows)
+    return []
 
 
 def chart(mesh, rows):

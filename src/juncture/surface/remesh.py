@@ -616,10 +616,12 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0):
             rows, thin = parts
             strips.append(thin)
             presplit(thin, mesh.vertices, splits, min_angle)
-        got = None if held else charts(mesh, rows)
+        pieces = []
+        got = None if held else charts(mesh, rows, kept=pieces)
+        kept.extend(pieces)
         if got is None:
             kept.append(rows)
-        elif parts is None:
+        elif parts is None and not pieces:
             whole[i] = got
         for patch in got or ():
             patch.lift = lift
