@@ -162,8 +162,7 @@ def settle_pairs(cfg, found):
     (:func:`.body.settle_past_centre`, against the pair's other intersections)."""
     out = dict(found)
     for pair, res in found.items():
-        if not any(getattr(r, "past_centre", None) is not None and r.past_centre.any()
-                   for r in res):
+        if not any(r.past_centre is not None and r.past_centre.any() for r in res):
             continue
         comp = cfg[pair.a]
         others = [r for q, r in found.items() if q.a == pair.a and q != pair]

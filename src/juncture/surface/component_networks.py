@@ -128,10 +128,11 @@ def _end_line(wing, side, inters, at_root, log, hosts):
         v = np.asarray(inter.u, float)
         take = np.asarray(inter.found, bool) & ~((u >= v) if at_root else (u <= v))
         pts[take], u[take], source[take] = np.asarray(inter.points, float)[take], v[take], k
-    if at_root and len(set(source[source >= 0].tolist())) > 1:
+    used = np.unique(source[source >= 0])
+    if at_root and len(used) > 1:
         on = "; ".join(f"{inters[k].name.split('/', 1)[1].rsplit(' ', 1)[0]}: lofting lines "
                        + ", ".join(str(j + 1) for j in np.flatnonzero(source == k))
-                       for k in sorted(set(source[source >= 0].tolist())))
+                       for k in used)
         log.append(f"{wing.name} {side_label(wing, side)}: {_SPLIT} {on}")
     missed = np.isnan(u)
     end = 0 if at_root else -1

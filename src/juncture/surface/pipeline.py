@@ -178,9 +178,8 @@ def _split_roots(geometry, surface, report):
     if not split:
         return []
     rows = [] if report.pairs is None else [surface.surface[np.asarray(report.pairs).ravel()]]
-    loops = [v for v in surface.open_loops]
-    if loops:
-        near = np.isin(surface.triangles, np.concatenate(loops)).any(axis=1)
+    if surface.open_loops:
+        near = np.isin(surface.triangles, np.concatenate(surface.open_loops)).any(axis=1)
         rows.append(surface.surface[near])
     if not rows:
         return []
