@@ -9,7 +9,10 @@ fillet and ``keep_area``, and meshes it with the defaults. Every run is classifi
   geometry (roots outside the fuselage continued to it; sharp runs only: a fillet adds area
   the model does not have) by juncture's ``normal_area_distribution`` and by the independent
   cell count of ``tests/union_oracle.py`` (which counts overlaps of wing-like components,
-  such as a fin standing on a wing, once), and its triangle angles recorded;
+  such as a fin standing on a wing, once), its triangle angles recorded, and how far the
+  exact curves where wing-like components meet bodies lie off its seam edges at their
+  middles (issue 12: 1e-6 of the size; measured with juncture's own ``seam_curves``, the
+  oracle is in tests/surface/test_seam_curves.py);
 - ``kept``: closed, but the re-triangulation for quality was not kept (a warning);
 - ``complete``: ``complete`` refused the deck (issue 11's business, not the mesh's);
 - ``refused``: ``mesh`` refused the surface, by message class;
@@ -63,6 +66,24 @@ def union_volume(cfg, n=2001):
     return float(simpson(a["total"], x=a["x"])), np.asarray(a["x"])
 
 
+def seam_sag(geometry, surface):
+    """The largest distance, share of the size, between the middle of a mesh edge on the
+    exact curve of a wing-like component and a body and that curve's point there (juncture's
+    own ``seam_curves``: a measure, not an oracle; the tests hold the oracle)."""
+    import numpy as np
+
+    from juncture.surface.seam_curves import curve_edges, seam_curves
+
+    curves = seam_curves(geometry, surface)
+    if curves is None:
+        return 0.0
+    t = surface.triangles
+    e = curve_edges(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), curves)
+    mid = surface.vertices[e].mean(axis=1)
+    exact = curves(e[:, 0], e[:, 1], mid)
+    return float(np.linalg.norm(exact - mid, axis=1).max(initial=0.0) / curves.size)
+
+
 def survey_deck(job):
     import numpy as np
 
@@ -100,6 +121,7 @@ def survey_deck(job):
             rec["min_angle"] = float(ang.min())
             rec["share20"] = float(np.mean(ang.min(axis=1) >= 20.0))
             rec["triangles"] = int(len(surface.triangles))
+            rec["seam_sag"] = seam_sag(geo, surface)
             if not kwargs:
                 from tests.union_oracle import union_volume as cells_volume
 
@@ -154,6 +176,11 @@ def main(argv=None):
                   f">= 5 deg on {np.mean(mins >= 5):.0%}; share >= 20 deg: median "
                   f"{np.median(s20):.3f}, worst {s20.min():.3f}; mesh seconds median "
                   f"{np.median(secs):.2f}, max {secs.max():.2f}")
+            sag = np.array([r["seam_sag"] for r in closed if "seam_sag" in r])
+            if len(sag):
+                print(f"  exact wing/body curve off the mesh's seam edges (share of size): "
+                      f"median {np.median(sag):.1e}, worst {sag.max():.1e}, within 1e-6 on "
+                      f"{np.mean(sag <= 1e-6):.0%}")
             vol = [r["volume_error"] for r in closed if "volume_error" in r]
             if vol:
                 print(f"  volume vs A(x): median {np.median(vol):+.3%}, worst "

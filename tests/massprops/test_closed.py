@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import juncture as jc
+from juncture.analysis.areas import normal_area_distribution
 from juncture.massprops import configuration_mass_properties, surface_mass_properties
 from tests.support import EXAMPLE_DECK, PDAS_DECK
 
@@ -57,8 +58,12 @@ def test_massprops_of_a_deck_adds_the_enclosed_solid_counting_overlaps_once(caps
     """``juncture massprops DECK``: beside each component as the deck gives it, the solid the
     completed airplane's one closed surface encloses, the surface ``juncture mesh DECK``
     writes (trimesh's volume of that surface as the oracle, and the volume ``mesh`` prints:
-    they agree); the buried wing root makes the per-component total larger. The PDAS
-    wing-body (the transport's takes seconds more)."""
+    they agree); the wing root's sliver inside the fuselage makes the per-component total
+    larger, and the enclosed volume is within 1 % of the integral of the model's normal
+    areas A(x) (12.4 % short before the seams followed the exact curve: the wing has three
+    ordinates, its networks join them by straight lines, and new points within ten lifts of
+    the root's straight 70 ft chords were lifted only part of the way onto the PCHIP
+    sections). The PDAS wing-body (the transport's takes seconds more)."""
     import json
 
     trimesh = pytest.importorskip("trimesh")
@@ -73,7 +78,12 @@ def test_massprops_of_a_deck_adds_the_enclosed_solid_counting_overlaps_once(caps
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert enclosed["volume"] == pytest.approx(tm.volume, rel=1e-12)
     assert enclosed["mass"] == pytest.approx(2.0 * tm.volume, rel=1e-12)
-    assert enclosed["volume"] < 0.99 * total["volume"]
+    assert enclosed["volume"] < total["volume"]
+    cfg = jc.read(PDAS_DECK)
+    lo, hi = cfg.extents()
+    x = np.linspace(lo[0], hi[0], 401)
+    union = np.trapezoid(normal_area_distribution(cfg, x=x, flow_through=False)["total"], x)
+    assert abs(tm.volume / union - 1.0) < 0.01
     text = run_massprops(PDAS_DECK)
     assert ("enclosed solid (the completed airplane as one closed surface, overlaps counted "
             f"once): mass {tm.volume:.6g}") in text.replace("\n", " ")

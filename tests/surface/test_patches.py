@@ -24,9 +24,11 @@ def _geometry(name):
 def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, slow=False):
     """The wing and the fuselage's middle as one network (tests/data/generated/README.md)
     turn 120 deg at the wing's root: the network is two patches there, the root line a seam
-    between them, and the surface re-triangulates with no triangle under 5 deg. As one patch
-    its triangles were refined across the crease, crossed each other, and the network kept
-    its assembled triangles (down to 0.0075 deg)."""
+    between them, and the surface re-triangulates with no triangle under 4.5 deg (8.3 with
+    the seam on its chords; 4.8 since it follows the exact curve, juncture.surface.
+    seam_curves, a triangle beside it whose corner was lifted part of the way, as next to
+    every intersection line). As one patch its triangles were refined across the crease,
+    crossed each other, and the network kept its assembled triangles (down to 0.0075 deg)."""
     geo = _geometry("high_wing_one_network_with_the_body.inp")
     assembled = assemble(geo)
     lower = assembled.surfaces.index("wing-body lower")
@@ -46,7 +48,7 @@ def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, slow=False
             surface = jc.mesh(geo)
         return triangle_angles(surface.vertices, surface.triangles).min()
 
-    assert smallest() >= 5.0
+    assert smallest() >= 4.5
     if not slow:
         return
     monkeypatch.setattr(pt, "CREASE", 180.0)

@@ -75,7 +75,9 @@ def _models(geometry, mesh, kind):
 
 def surface_lift(geometry, mesh):
     """One ``lift`` for :func:`~juncture.surface.remesh.remesh` doing :func:`body_lift` on
-    circular bodies and :func:`wing_lift` on wing-like components (None if neither applies)."""
+    circular bodies and :func:`wing_lift` on wing-like components (None if neither applies).
+    ``lift.seam``: the exact curves where wing-like components meet bodies
+    (:func:`juncture.surface.seam_curves.seam_curves`; None where there are none)."""
     lifts = [f for f in (body_lift(geometry, mesh), wing_lift(geometry, mesh)) if f]
     if not lifts:
         return None
@@ -93,6 +95,9 @@ def surface_lift(geometry, mesh):
         return points, size
 
     lift.both = both
+    from .seam_curves import seam_curves
+
+    lift.seam = seam_curves(geometry, mesh)
     return lift
 
 

@@ -100,11 +100,23 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     itself is checked only where the re-triangulation is not kept (a re-triangulation that
     passes every check needs no second one): one that fails is refused
     (:class:`~juncture.errors.GeometryError`, the cause first where known); one that passes
-    is returned with the :class:`~juncture.errors.JunctureWarning` of :func:`quality`."""
+    is returned with the :class:`~juncture.errors.JunctureWarning` of :func:`quality`.
+    Before re-triangulating, the seams on the exact curves where wing-like components meet
+    bodies are split to follow them (:func:`juncture.surface.seam_curves.follow_curves`,
+    with ``lift.seam``); where that re-triangulation fails a check (the chart of a low
+    wing's root block folding beside the dense seam), the assembled surface as it came is
+    re-triangulated instead, as without the curves."""
     from .check import check_mesh
 
     failures = None
     if min_angle:
+        followed, flift = _followed(geometry, surface, lift)
+        if followed is not surface:
+            better, report, _ = _remeshed(followed, min_angle, edge_length, tolerance,
+                                          check, flift, curvature, depth,
+                                          _line_points(geometry, followed, flift), retries=0)
+            if report is not None or (better is not followed and not check):
+                return better, report
         better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance,
                                              check, lift, curvature, depth,
                                              _line_points(geometry, surface))
@@ -230,22 +242,42 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     return better, report
 
 
-def _line_points(geometry, surface):
+def _line_points(geometry, surface, lift=None):
     """(n,) whether each vertex of ``surface`` is an intersection point of ``geometry``
-    (:func:`juncture.surface.imprint.on_lines`): a network may turn at a crease only there
+    (:func:`juncture.surface.imprint.on_lines`) or lies on an exact curve of ``lift.seam``
+    (:mod:`juncture.surface.seam_curves`): a network may turn at a crease only there
     (:data:`juncture.surface.patches.CREASE`)."""
     from .imprint import on_lines
 
     lines = np.zeros(len(surface.vertices), bool)
     lines[list(on_lines(geometry, surface.vertices))] = True
+    curves = getattr(lift, "seam", None)
+    for *_, on in (curves.lines if curves is not None else ()):
+        lines |= on
     return lines
 
 
+def _followed(geometry, surface, lift):
+    """(surface, lift): the surface with its seams on exact curves split to follow them
+    (:func:`juncture.surface.seam_curves.follow_curves`) and its lift, made for it; as they
+    are where ``lift`` has no curves or nothing is split."""
+    curves = getattr(lift, "seam", None)
+    if curves is None:
+        return surface, lift
+    from .lift import surface_lift
+    from .seam_curves import follow_curves
+
+    out = follow_curves(surface, curves)
+    return (surface, lift) if out is surface else (out, surface_lift(geometry, out))
+
+
 def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature, depth,
-              lines=None):
+              lines=None, retries=None):
     """(surface, report, failures) of :func:`quality`, without its warning: failures None
     where the re-triangulation was kept or the surface is open (returned as it is).
-    ``lines``: see :func:`juncture.surface.remesh.remesh`."""
+    ``lines``: see :func:`juncture.surface.remesh.remesh`; ``retries``: how many times
+    surfaces that crossed keep their triangles and the rest is tried again (default
+    :data:`RETRIES`)."""
     from ..errors import GeometryError
     from .check import check_mesh
     from .remesh import remesh
@@ -254,7 +286,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     if surface.open_loops:
         return surface, None, None
     keep = set()
-    for _ in range(RETRIES + 1):
+    for _ in range((RETRIES if retries is None else retries) + 1):
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
                             tolerance=tolerance, keep=keep, lift=lift, lines=lines, **sizing)

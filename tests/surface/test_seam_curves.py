@@ -1,0 +1,153 @@
+"""juncture.surface.seam_curves: the mesh follows the exact wing-body intersection curve.
+
+Issue 12: every intersection point is a mesh vertex, and exact surface points midway between
+seam vertices lie within 1e-6 L of the mesh. The oracle is independent of juncture: the
+fuselage's cylinder is y^2 + z^2 = R^2, the wing's sections are SciPy PCHIP curves through
+their ordinates, ruled spanwise; the curve's point at an x is found by brentq on both, and
+its distance from the mesh point to triangle (planes and edges, here).
+"""
+
+import warnings
+
+import numpy as np
+import pytest
+from scipy.interpolate import PchipInterpolator
+from scipy.optimize import brentq
+
+import juncture as jc
+from tests.support import wing_body
+
+RADIUS = 3.0
+CYLINDER = (18.5, 37.5)          # x range where tests.support's body is the cylinder R = 3
+
+
+def _wing_z(wing, side):
+    """z(x, y) of the wing's ``side`` by SciPy: PCHIP sections, ruled between them."""
+    pts = wing.section_points(side)                        # (sections, stations, 3)
+    f = wing.x_over_c / 100.0
+    curves = [PchipInterpolator(f, pts[k, :, 2]) for k in range(len(pts))]
+    ys = wing.le[:, 1]
+
+    def z(x, y):
+        k = int(np.clip(np.searchsorted(ys, y) - 1, 0, len(ys) - 2))
+        lam = (y - ys[k]) / (ys[k + 1] - ys[k])
+        le = (1 - lam) * wing.le[k, 0] + lam * wing.le[k + 1, 0]
+        chord = (1 - lam) * wing.chord[k] + lam * wing.chord[k + 1]
+        f = (x - le) / chord
+        return float((1 - lam) * curves[k](f) + lam * curves[k + 1](f))
+    return z
+
+
+def _mesh(**kwargs):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        cfg = wing_body(**kwargs)
+        return cfg, jc.mesh(jc.complete(cfg))
+
+
+def _seam(surface, z, side):
+    """Vertices (y > 0, on the cylinder's x range) within 1e-9 L of both the cylinder and
+    the wing's ``side``, sorted by x."""
+    v = surface.vertices
+    tol = 1e-9 * np.ptp(v, axis=0).max()
+    v = v[(v[:, 1] > 0) & (v[:, 0] > CYLINDER[0]) & (v[:, 0] < CYLINDER[1])]
+    v = v[np.abs(np.hypot(v[:, 1], v[:, 2]) - RADIUS) < tol]
+    v = v[[abs(p[2] - z(p[0], p[1])) < tol for p in v]]
+    return v[np.argsort(v[:, 0])]
+
+
+def _segment_distance(q, a, b):
+    """Distances of q (3,) from the segments a-b (t, 3)."""
+    d = b - a
+    t = np.clip(np.einsum("ij,ij->i", q - a, d) / np.einsum("ij,ij->i", d, d), 0.0, 1.0)
+    return np.linalg.norm(a + t[:, None] * d - q, axis=1)
+
+
+def _distance(q, vertices, triangles, reach=1.0):
+    """Distance of q (3,) from the triangles with a corner within ``reach`` of it: the
+    plane's where its foot falls inside the triangle, else the nearest edge's."""
+    p = vertices[triangles]
+    p = p[(np.linalg.norm(p - q, axis=2) < reach).any(axis=1)]
+    a, b, c = p[:, 0], p[:, 1], p[:, 2]
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    h = np.einsum("ij,ij->i", q - a, n)
+    foot = q - h[:, None] * n
+    inside = np.ones(len(p), bool)
+    for u, v in ((a, b), (b, c), (c, a)):
+        inside &= np.einsum("ij,ij->i", np.cross(v - u, foot - u), n) >= 0.0
+    edges = np.min([_segment_distance(q, u, v) for u, v in ((a, b), (b, c), (c, a))], axis=0)
+    return float(np.where(inside, np.abs(h), edges).min())
+
+
+def _gaps(cfg, surface, side):
+    """(how many seam vertices, their largest distance from the cylinder, from the wing;
+    the largest distance from the mesh of the exact curve's point midway (in x) between
+    neighbours)."""
+    z = _wing_z(cfg.components["wing"], side)
+    v = _seam(surface, z, side)
+    on_body = np.abs(np.hypot(v[:, 1], v[:, 2]) - RADIUS).max()
+    on_wing = max(abs(p[2] - z(p[0], p[1])) for p in v)
+    xm = 0.5 * (v[1:, 0] + v[:-1, 0])
+    ym = [brentq(lambda y, x=x: np.hypot(y, z(x, y)) - RADIUS, 1.5, RADIUS) for x in xm]
+    exact = np.array([[x, y, z(x, y)] for x, y in zip(xm, ym)])
+    distance = max(_distance(q, surface.vertices, surface.triangles) for q in exact)
+    return len(v), on_body, on_wing, distance
+
+
+@pytest.fixture(scope="module")
+def cambered():
+    return _mesh(camber=1.5)
+
+
+@pytest.mark.parametrize("side", ["upper", "lower"])
+def test_the_mesh_follows_the_exact_wing_body_curve(cambered, side):
+    """Seam vertices lie on the cylinder and on the wing's PCHIP surface (1e-12 L), and the
+    exact curve midway between neighbours lies within 1e-6 L of the mesh."""
+    cfg, surface = cambered
+    size = float(np.ptp(surface.vertices, axis=0).max())
+    count, on_body, on_wing, midway = _gaps(cfg, surface, side)
+    assert count > 50
+    assert on_body < 1e-12 * size and on_wing < 1e-12 * size
+    assert midway < 1e-6 * size
+
+
+def test_without_the_curve_the_seam_cuts_its_chords(monkeypatch):
+    """The counterfactual: split points left on the seam's straight edges and no split for
+    the sag leave the exact curve far off the mesh between juncture's points."""
+    import juncture.surface.seam_curves as sc
+
+    monkeypatch.setattr(sc, "seam_curves", lambda geometry, mesh: None)
+    cfg, surface = _mesh(camber=1.5)
+    size = float(np.ptp(surface.vertices, axis=0).max())
+    count, _, _, midway = _gaps(cfg, surface, "upper")
+    assert count < 20 and midway > 1e-5 * size
+
+
+@pytest.mark.parametrize("side", ["upper", "lower"])
+def test_a_fin_s_point_goes_along_its_span_onto_the_cylinder(side):
+    """A fin (span along z) standing on a cylinder of radius 3: a point near the top at a
+    chord fraction is moved along z at that fraction onto the circle and onto the fin's
+    PCHIP section there (SciPy, ruled between the two sections)."""
+    from juncture.model import CircularBody, WingLike
+    from juncture.surface.seam_curves import _onto
+
+    body = CircularBody("body", np.array([0.0, 50.0]), np.array([RADIUS, RADIUS]))
+    xc = np.array([0.0, 10.0, 30.0, 50.0, 75.0, 100.0])
+    half = np.array([0.0, 1.9, 2.9, 3.0, 2.2, 0.0])
+    le = np.array([[20.0, 0.0, 2.5], [24.0, 0.0, 8.0]])
+    fin = WingLike("fin", "fin", le, np.array([10.0, 6.0]), xc, np.tile(half, (2, 1)),
+                   np.tile(half, (2, 1)))
+    f = np.linspace(0.05, 0.95, 7)
+    x = 20.0 + (2.9 - 2.5) / 5.5 * 4.0 + f * (10.0 - (2.9 - 2.5) / 5.5 * 4.0)
+    p = np.stack([x, np.full_like(f, 0.1), np.full_like(f, 2.9)], axis=1)
+    got = _onto(fin, side, body, p, np.ones(len(f)), 60.0)
+    assert np.abs(np.hypot(got[:, 1], got[:, 2]) - RADIUS).max() < 1e-12
+    # the section at the points' height, ruled between the two given: SciPy's PCHIP
+    lam = (got[:, 2] - 2.5) / 5.5
+    lead = 20.0 + lam * 4.0
+    chord = 10.0 + lam * (6.0 - 10.0)
+    assert np.abs((got[:, 0] - lead) / chord - f).max() < 1e-12
+    offset = PchipInterpolator(xc / 100.0, half)((got[:, 0] - lead) / chord) * chord / 100.0
+    assert np.abs(np.abs(got[:, 1]) - offset).max() < 1e-12
+    assert np.all(np.sign(got[:, 1]) == (1 if side == "upper" else -1))
