@@ -141,7 +141,7 @@ def test_a_fin_s_point_goes_along_its_span_onto_the_cylinder(side):
     f = np.linspace(0.05, 0.95, 7)
     x = 20.0 + (2.9 - 2.5) / 5.5 * 4.0 + f * (10.0 - (2.9 - 2.5) / 5.5 * 4.0)
     p = np.stack([x, np.full_like(f, 0.1), np.full_like(f, 2.9)], axis=1)
-    got = _onto(fin, side, body, p, np.ones(len(f)), 60.0)
+    got = _onto(fin, side, body.radial_error, p, np.ones(len(f)), 60.0)
     assert np.abs(np.hypot(got[:, 1], got[:, 2]) - RADIUS).max() < 1e-12
     # the section at the points' height, ruled between the two given: SciPy's PCHIP
     lam = (got[:, 2] - 2.5) / 5.5

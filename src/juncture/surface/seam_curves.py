@@ -1,22 +1,24 @@
-"""Seam points on the exact intersection curve of a wing-like component and a body.
+"""Seams that follow the exact curve where a wing-like component meets its host.
 
 An intersection line is known at the points juncture computed (where the component's
-lofting lines meet the body, TM-4406, and where the layout's body stations meet the
+lofting lines meet the host, TM-4406, and where the layout's body stations meet the
 component); the assembled surface joins two of them by a straight edge, which cuts the
 exact curve by its sag (up to 0.22 ft on the transport's wing root, 7e-4 of its length).
-:func:`seam_curves` gives the re-triangulation (:mod:`juncture.surface.remesh`) a move for
-the points it splits on such an edge: the point's chord fraction is kept, and the
-component's surface at that fraction (its section curve, ruled spanwise between sections
-and extended inboard as TM-4406 eq 4 extends the lofting lines) is followed along the span
-to the body (a secant search on the body's error function), so the point lies on both
-exact surfaces. :meth:`SeamCurves.sagging` splits such edges before the refinement until
-each piece's exact middle lies within a tolerance of its chord, so that the mesh follows
-the curve between juncture's points too.
+:func:`follow_curves` splits such edges, before the re-triangulation
+(:func:`juncture.surface.pipeline.finish`), until the curve's middle between two
+neighbouring points lies within :data:`SAG` of the airplane's size of their chord. A new
+point keeps the chord fraction of its place on the edge and follows the component's
+surface at that fraction (its section curve, ruled spanwise between sections and extended
+beyond them as TM-4406 eq 4 extends the lofting lines) along the span to the host (a
+secant search on the host's error function), so it lies on both exact surfaces. Hosts: a
+circular or arbitrary fuselage or pod. A wing-like host (a pylon under a wing, a fin on a
+tail) is left out: followed there, the transport's wing took triangles of 1.3 deg beside
+its pylons' footprints (8.6 deg the worst on its chords).
 
 An edge is on a curve where both its ends lie on one side of the component's exact surface
-and on the body (to :data:`ON` of the airplane's size), directly or as mirror images, and
-its split point moves by at most :data:`REACH` of its length (an edge across the
-footprint, between two points of the same line, is not the line).
+and on the host (to :data:`ON` of the airplane's size), directly or as mirror images, and a
+point moves by at most :data:`REACH` of its edge's length (an edge across the footprint,
+between two points of the same line, is not the line).
 """
 
 from __future__ import annotations
@@ -39,13 +41,14 @@ START = 1e-3
 
 
 def _pairs(geometry, mesh):
-    """(wing model, body model) of every wing-like component and body of the geometry."""
+    """(wing-like model, body, the body's error function) of every wing-like component and
+    every body of the geometry."""
     from ..model import ArbitraryBody, CircularBody, WingLike
 
     comps = list(getattr(geometry, "configuration", None) or ())
     wings = [c for c in comps if isinstance(c, WingLike)]
     bodies = [c for c in comps if isinstance(c, (CircularBody, ArbitraryBody))]
-    return [(w, b) for w in wings for b in bodies]
+    return [(w, b, _error(b)) for w in wings for b in bodies]
 
 
 def _error(body):
@@ -55,6 +58,18 @@ def _error(body):
     if isinstance(body, CircularBody):
         return body.radial_error
     return body.signed_distance
+
+
+def _box(model, size):
+    """(2, 3) the model's networks' box, grown by a tenth of ``size`` and, for a wing-like
+    component, its longest chord: its intersection points lie in it, its lofting lines
+    extended to its host included."""
+    from ..model import WingLike
+
+    nets = model.networks()
+    pts = np.concatenate([n.reshape(-1, 3) for n in nets.values()])
+    reach = 0.1 * size + (float(np.max(model.chord)) if isinstance(model, WingLike) else 0.0)
+    return np.stack([pts.min(axis=0) - reach, pts.max(axis=0) + reach])
 
 
 def _fraction(wing, p):
@@ -70,8 +85,8 @@ def _fraction(wing, p):
 class SeamCurves:
     """The exact intersection curves of a mesh's wing-like components and bodies.
 
-    ``lines``: one entry per (wing, side, body, mirrored): the wing and body models, the side
-    and a (n_vertices,) bool of the mesh's vertices on that curve."""
+    ``lines``: one entry per curve, (the wing-like model, its side, the host's error
+    function, the mirror flip (3,), a (n_vertices,) bool of the mesh's vertices on it)."""
 
     def __init__(self, vertices, lines, size):
         self.vertices = np.asarray(vertices, float)
@@ -94,8 +109,8 @@ class SeamCurves:
         h = np.linalg.norm(self.vertices[b] - self.vertices[a], axis=1)
         for k in np.unique(which[which >= 0]):
             sel = np.flatnonzero(which == k)
-            wing, side, body, flip, _ = self.lines[k]
-            got = _onto(wing, side, body, points[sel] * flip, h[sel], self.size) * flip
+            wing, side, error, flip, _ = self.lines[k]
+            got = _onto(wing, side, error, points[sel] * flip, h[sel], self.size) * flip
             near = np.linalg.norm(got - points[sel], axis=1) <= REACH * h[sel]
             points[sel[near]] = got[near]
         return points
@@ -129,10 +144,10 @@ class SeamCurves:
         return {e: np.array(sorted(t))[1:-1] for e, t in cuts.items() if len(t) > 2}
 
 
-def _onto(wing, side, body, p, h, size):
-    """Points ``p`` (k, 3) moved along the span at their chord fraction onto the body (a
-    secant search from their own station); NaN where the search does not settle."""
-    error = _error(body)
+def _onto(wing, side, error, p, h, size):
+    """Points ``p`` (k, 3) moved along the span at their chord fraction onto the host (a
+    secant search from their own station on ``error``, the host's error function); NaN
+    where the search does not settle."""
     f = _fraction(wing, p)
     ax = wing.span_axis
 
@@ -162,19 +177,25 @@ def _onto(wing, side, body, p, h, size):
 
 def seam_curves(geometry, mesh):
     """:class:`SeamCurves` of the assembled ``mesh`` of ``geometry``, or None when no
-    vertex lies on the curve of a wing-like component and a body."""
+    vertex lies on the curve of a wing-like component and its host."""
     vertices = np.asarray(mesh.vertices, float)
     if not len(vertices):
         return None
     size = float(np.ptp(vertices, axis=0).max())
     tol = ON * size
-    lines = []
-    for wing, body in _pairs(geometry, mesh):
-        error = _error(body)
+    lines, boxes = [], {}
+    for wing, host, error in _pairs(geometry, mesh):
+        for m in (wing, host):
+            if id(m) not in boxes:
+                boxes[id(m)] = _box(m, size)
+        lo = np.maximum(boxes[id(wing)][0], boxes[id(host)][0])
+        hi = np.minimum(boxes[id(wing)][1], boxes[id(host)][1])
         for flip in (np.ones(3), np.array([1.0, -1.0, 1.0])):
             p = vertices * flip
-            on_body = np.abs(error(p)) <= tol
-            if not on_body.any():
+            near = np.flatnonzero(np.all((p >= lo) & (p <= hi), axis=1))
+            with np.errstate(invalid="ignore"):
+                on_body = near[np.abs(error(p[near])) <= tol]
+            if not len(on_body):
                 continue
             q = p[on_body]
             f = _fraction(wing, q)
@@ -187,8 +208,8 @@ def seam_curves(geometry, mesh):
                 if on.sum() < 2:
                     continue
                 mask = np.zeros(len(vertices), bool)
-                mask[np.flatnonzero(on_body)[on]] = True
-                lines.append((wing, side, body, flip, mask))
+                mask[on_body[on]] = True
+                lines.append((wing, side, error, flip, mask))
     return SeamCurves(vertices, lines, size) if lines else None
 
 
