@@ -133,9 +133,12 @@ class SeamCurves:
             chord = pa[:, None] + ts[..., None] * (pb - pa)[:, None]
             exact = self(np.repeat(a, 3), np.repeat(b, 3), chord.reshape(-1, 3))
             exact = exact.reshape(-1, 3, 3)
-            sag = np.linalg.norm(exact[:, 1] - 0.5 * (exact[:, 0] + exact[:, 2]), axis=1)
+            # the curve's point at the middle of the piece's chord (between its exact ends),
+            # as issue 12 measures it, and at the middle of the edge's fractions (the new point)
+            mid = 0.5 * (exact[:, 0] + exact[:, 2])
+            sag = np.linalg.norm(self(a, b, mid) - mid, axis=1)
             moved = np.any(exact[:, 1] != chord[:, 1], axis=1)
-            split = (sag > tol) & moved
+            split = (np.maximum(sag, np.linalg.norm(exact[:, 1] - mid, axis=1)) > tol) & moved
             todo = []
             for k in np.flatnonzero(split):
                 m = float(ts[k, 1])
