@@ -120,3 +120,20 @@ def junctions_overlap(cfg, a, b, host):
         return True
     sa, sb = lines(a, False), lines(b, False)      # each line's angle linear in x
     return inside(np.concatenate(la), sb) or inside(np.concatenate(lb), sa)
+
+
+def plane_feet(q, p):
+    """(signed distances of a point q (3,) from the planes of the triangles p (t, 3, 3),
+    whether its foot on each plane falls inside the triangle): an independent test of
+    planes and sides, for the distance of a point from a mesh."""
+    import numpy as np
+
+    a, b, c = p[:, 0], p[:, 1], p[:, 2]
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    h = np.einsum("ij,ij->i", q - a, n)
+    foot = q - h[:, None] * n
+    inside = np.ones(len(p), bool)
+    for u, v in ((a, b), (b, c), (c, a)):
+        inside &= np.einsum("ij,ij->i", np.cross(v - u, foot - u), n) >= -1e-9
+    return h, inside

@@ -20,7 +20,7 @@ from juncture.surface.pipeline import quality
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
 from tests.deckgen import decks
-from tests.support import DATA, EXAMPLE_DECK
+from tests.support import DATA, EXAMPLE_DECK, plane_feet
 
 GENERATED = sorted((DATA / "generated").glob("*.inp"))
 
@@ -155,15 +155,8 @@ def test_the_transport_keeps_every_vertex_closed_and_gets_good_angles(transport)
 def _distance_on_triangles(q, p):
     """Distance of a point q (3,) to the nearest of the triangles p (t, 3, 3) whose plane it
     projects into inside the triangle (an independent plane-and-barycentric test)."""
-    a, b, c = p[:, 0], p[:, 1], p[:, 2]
-    n = np.cross(b - a, c - a)
-    n /= np.linalg.norm(n, axis=1, keepdims=True)
-    d = np.einsum("ij,ij->i", q - a, n)
-    foot = q - d[:, None] * n
-    inside = np.ones(len(p), bool)
-    for u, v in ((a, b), (b, c), (c, a)):
-        inside &= np.einsum("ij,ij->i", np.cross(v - u, foot - u), n) >= -1e-9
-    return np.abs(d[inside]).min() if inside.any() else np.inf
+    h, inside = plane_feet(q, p)
+    return np.abs(h[inside]).min() if inside.any() else np.inf
 
 
 def test_new_points_lie_on_the_assembled_surface(transport):

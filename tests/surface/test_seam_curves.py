@@ -15,7 +15,7 @@ from scipy.interpolate import PchipInterpolator
 from scipy.optimize import brentq
 
 import juncture as jc
-from tests.support import wing_body
+from tests.support import plane_feet, wing_body
 
 RADIUS = 3.0
 CYLINDER = (18.5, 37.5)          # x range where tests.support's body is the cylinder R = 3
@@ -68,14 +68,8 @@ def _distance(q, vertices, triangles, reach=1.0):
     plane's where its foot falls inside the triangle, else the nearest edge's."""
     p = vertices[triangles]
     p = p[(np.linalg.norm(p - q, axis=2) < reach).any(axis=1)]
+    h, inside = plane_feet(q, p)
     a, b, c = p[:, 0], p[:, 1], p[:, 2]
-    n = np.cross(b - a, c - a)
-    n /= np.linalg.norm(n, axis=1, keepdims=True)
-    h = np.einsum("ij,ij->i", q - a, n)
-    foot = q - h[:, None] * n
-    inside = np.ones(len(p), bool)
-    for u, v in ((a, b), (b, c), (c, a)):
-        inside &= np.einsum("ij,ij->i", np.cross(v - u, foot - u), n) >= 0.0
     edges = np.min([_segment_distance(q, u, v) for u, v in ((a, b), (b, c), (c, a))], axis=0)
     return float(np.where(inside, np.abs(h), edges).min())
 
