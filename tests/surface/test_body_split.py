@@ -1,6 +1,7 @@
 """The fuselage's upper and lower blocks (surface/body_split.py) meet on one line."""
 
 import numpy as np
+import pytest
 
 from juncture.model import CircularBody
 from juncture.surface.body_split import Boundary, split_body
@@ -228,6 +229,7 @@ def test_a_blunt_trailing_edge_at_one_station_leaves_one_line_behind_it():
     assert at_edge(up) == _keys(upper.points[-1:]) and at_edge(lo) == _keys(lower.points[-1:])
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_rows_follow_a_bounding_curve_that_runs_to_the_keel(monkeypatch):
     """A low wing on an arbitrary-section fuselage (tests/data/generated/README.md): aft of
     the wing's trailing edge the blocks' bounding curve runs down to the keel before the

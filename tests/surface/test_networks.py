@@ -107,6 +107,7 @@ def test_a_long_tail_cone_is_meshed_to_its_volume(name):
     assert abs(surface.volume() / cells - 1.0) < 5e-3
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_no_row_is_added_in_the_wing_junction_range():
     """A generated airplane (tests/data/generated/README.md): an arbitrary-section fuselage
     re-designed at fixed area (cubic fillet, keep_area) stands off the straight lines
@@ -126,3 +127,44 @@ def test_no_row_is_added_in_the_wing_junction_range():
     assert added.size and not np.any((added > starts.min()) & (added < starts.max()))
     surface = jc.mesh(geo)
     assert check_mesh(surface.vertices, surface.triangles).ok
+
+
+def test_a_blunt_trailing_edge_cut_by_the_body_is_closed_by_the_aft_block():
+    """A wing whose trailing edge is thick and cambered at the root, cut by a cylinder (held-out
+    seed 2525 draw 3): its upper and lower trailing edges meet the body at two points apart in
+    x and z. The body's aft block carries both in its first section, so the blunt end is closed
+    at the root by an edge of the body. Its sections left the upper point out, and the cap
+    closing the blunt end ran up the body to the section's next point (there a 5 ft sliver,
+    meshed into triangles of 0.3 deg; here up to z = 2.1, 0.14 deg). Oracles: the exact
+    intersection points, the deck's planform (no cap vertex off the wing's trailing edge or
+    tip) and the corner angles."""
+    import dataclasses
+
+    from juncture.model import WingLike
+    from juncture.surface.quality import triangle_angles
+    from tests.support import wing_body
+
+    cfg = wing_body(camber=2.0)
+    w, body = cfg["wing"], cfg["body"]
+    body = dataclasses.replace(body, points_per_section=(5,))   # a coarse body, as the deck's
+    up, lo = np.array(w.upper, float), np.array(w.lower, float)
+    up[:, -1], lo[:, -1] = 0.4, 0.2          # a blunt trailing edge, 0.6 % of the chord
+    w = WingLike("wing", "wing", w.le, w.chord, w.x_over_c, up, lo, w.camber)
+    geo = jc.complete(cfg.with_component(w).with_component(body))
+    p_up = np.asarray(geo.intersections["wing/body upper"])[-1]
+    p_lo = np.asarray(geo.intersections["wing/body lower"])[-1]
+    assert np.linalg.norm(p_up - p_lo) > 0.1
+    aft = np.asarray(geo.networks["body aft"]).reshape(-1, 3)
+    assert (aft == p_up).all(axis=1).any() and (aft == p_lo).all(axis=1).any()
+
+    surface = jc.mesh(geo)
+    caps = [k for k, s in enumerate(surface.surfaces) if s.endswith(" cap")]
+    capped = surface.vertices[np.unique(surface.triangles[np.isin(surface.surface, caps)])]
+    te = w.le[:, 0] + w.chord                                  # trailing edge x
+    y_sec = w.le[:, 1]
+    x_te = np.interp(np.abs(capped[:, 1]), y_sec, te)
+    tip = np.isclose(np.abs(capped[:, 1]), y_sec[-1], atol=1e-9)
+    band = (-(lo[:, -1] * w.chord).max() / 100 - 1e-3, (up[:, -1] * w.chord).max() / 100 + 1e-3)
+    off = (np.abs(capped[:, 0] - x_te) > 0.05) | (capped[:, 2] < band[0]) | (capped[:, 2] > band[1])
+    assert not np.any(off & ~tip), "a cap runs off the wing's trailing edge"
+    assert triangle_angles(surface.vertices, surface.triangles).min() >= 5.0

@@ -446,6 +446,7 @@ def test_a_pod_whose_chart_varies_too_much_is_charted_in_halves(monkeypatch):
         triangle_angles(first.vertices, first.triangles[on_pod]).min() < 5.0
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_a_chord_two_patches_both_make_is_split(monkeypatch):
     """A generated airplane (tests/data/generated/README.md) with a wing tip of no chord:
     the upper and lower patches both joined a leading-edge point to a trailing-edge point
@@ -470,6 +471,7 @@ def test_a_chord_two_patches_both_make_is_split(monkeypatch):
     assert check_mesh(*_arrays(first)).nonmanifold_edges > 0
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_a_chart_whose_triangles_overlap_inside_is_not_used():
     """A generated airplane (tests/data/generated/README.md) whose pod's image flattens with
     its boundary embedded but triangles overlapping inside (matplotlib's point locator
@@ -487,6 +489,7 @@ def test_a_chart_whose_triangles_overlap_inside_is_not_used():
     assert check_mesh(surface.vertices, surface.triangles).ok
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_curvature_sizing_ends_next_to_a_free_seam():
     """A generated airplane (tests/data/generated/README.md, the tail cone of few stations)
     meshed with ``curvature=10``: along the wing root's trailing edge, next to its strip (a
@@ -558,6 +561,7 @@ def test_slow_every_drop_kept_leaves_the_worse_cavity(monkeypatch):
     assert triangle_angles(surface.vertices, surface.triangles).min() < 5.0
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_a_block_that_charts_only_in_pieces_keeps_only_the_pieces_that_do_not():
     """A generated airplane (tests/data/generated/README.md, seed 2424 draw 17) whose
     fuselage tapers over 88 ft to a section 0.0005 ft across: its lower block does not

@@ -15,6 +15,7 @@ from scipy.interpolate import PchipInterpolator
 from scipy.optimize import brentq
 
 import juncture as jc
+from juncture.surface.seam_curves import PIECE, SeamCurves
 from tests.support import plane_feet, wing_body
 
 RADIUS = 3.0
@@ -145,3 +146,25 @@ def test_a_fin_s_point_goes_along_its_span_onto_the_cylinder(side):
     offset = PchipInterpolator(xc / 100.0, half)((got[:, 0] - lead) / chord) * chord / 100.0
     assert np.abs(np.abs(got[:, 1]) - offset).max() < 1e-12
     assert np.all(np.sign(got[:, 1]) == (1 if side == "upper" else -1))
+
+
+class _Jump(SeamCurves):
+    """A curve that jumps by a tenth of the size where x crosses 0.3 (a kink the chord
+    fraction maps across: held-out seed 2525 draw 11, where halving never ended)."""
+
+    def on_curve(self, a, b):
+        return np.zeros(len(np.atleast_1d(a)), np.int64)
+
+    def __call__(self, a, b, points):
+        p = np.array(points, float)
+        p[:, 2] += np.where(p[:, 0] > 0.3, 0.1 * self.size, 0.0) + 1e-3 * np.sin(9 * p[:, 0])
+        return p
+
+
+def test_halving_ends_where_the_curve_jumps():
+    curves = _Jump(np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]), [None], 1.0)
+    cuts = curves.sagging(np.array([[0, 1]]), 1e-6)[0]
+    assert np.all(np.diff(np.r_[0.0, cuts, 1.0]) > PIECE * curves.size / 2)
+    # the smooth part is split until it sags by at most the tolerance
+    near = np.r_[0.0, cuts[cuts < 0.3]]
+    assert len(near) > 10 and np.diff(near).max() < 0.05

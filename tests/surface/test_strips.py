@@ -118,6 +118,7 @@ def test_the_angle_zip_does_not_run_away_along_the_finer_chain():
     assert len(tri) == len(a) + len(b) - 2
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_a_tip_and_strip_cap_is_charted_and_zipped_apart():
     """The generated airplane whose blunt trailing edge runs into a thick tip
     (tests/data/generated/README.md), capped as tip and strip: re-triangulated, the strip is
@@ -196,6 +197,7 @@ def test_slow_a_wing_of_two_sections_fans_its_strip_without_its_corner_width(mon
     test_a_wing_of_two_sections_grades_down_to_its_strip(monkeypatch, slow=True)
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_a_blunt_trailing_edge_cut_by_the_body_keeps_its_root_edge(monkeypatch):
     """A wing's blunt trailing edge cut by a flat panel of an octagonal fuselage
     (tests/data/generated/README.md): the strip closing it ends in the edge across it where
@@ -230,6 +232,7 @@ def test_a_blunt_trailing_edge_cut_by_the_body_keeps_its_root_edge(monkeypatch):
     assert smallest() < 1.0
 
 
+@pytest.mark.slow  # a held-out airplane meshed whole (> 7 s): make test-all
 def test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch, slow=False):
     """A swept wing of four ordinates per section with a trailing edge 0.015 ft thick
     (tests/data/generated/README.md): its trailing edge is split into thousands of pieces

@@ -159,7 +159,7 @@ def _strip(wing, fillet, side, k_first):
     return np.concatenate([fillet.points, sec], axis=1)
 
 
-def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None):
+def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None, blunt=False):
     """The raw pieces every juncture layout is cut from (not yet oriented).
 
     Returns a dict: ``arc_u`` (n_stations, n_above, 3), body arcs from the top down to each
@@ -170,6 +170,14 @@ def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None):
     leading-edge station and ``behind`` from its trailing-edge station to the end, whose
     ring at the wing station is made of the first (last) arcs, so that the blocks share
     their boundary points; and ``n_below``, ``n_above``.
+
+    With ``blunt``, an end of the wing whose upper and lower arcs end at different points (a
+    blunt trailing edge cut by the body: its upper and lower edges meet the body apart) keeps
+    both points in its ring, and the sections beyond it both arcs' end angles, so that the
+    block has ``n_below + n_above`` points per section there (``blunt_ends``: (le, te) bool)
+    and the edge across the blunt end at the root is a seam of the body's block; otherwise
+    the ring's upper end point was left out, and the body's section jumped from the lower
+    edge's root over the upper one, leaving a slit.
     """
     u_end = np.concatenate([upper.u_end, lower.u_end])
     k_first = min(max(int(np.floor(np.nanmax(u_end))) + 1, 1), wing.n_sections - 1)
@@ -182,27 +190,28 @@ def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None):
     xg = body.x_global if stations is None else np.asarray(stations, float)
     x_le, x_te = min(xu[0], xl[0]), max(xu[-1], xl[-1])
 
-    def sections(xs, theta_lo, theta_hi):
-        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, theta_lo),
-                           n_below)
-        above = arc_points(body, xs, np.full(xs.size, theta_hi), np.full(xs.size, top), n_above)
-        return np.concatenate([below, above[:, 1:]], axis=1)
+    ends = tuple(bool(blunt and np.any(arc_l[k, -1] != arc_u[k, -1])) for k in (0, -1))
+
+    def sections(xs, k, both):
+        lo, hi = lower.theta_start[k], upper.theta_start[k]
+        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, lo), n_below)
+        above = arc_points(body, xs, np.full(xs.size, hi), np.full(xs.size, top), n_above)
+        return np.concatenate([below, above[:, 0 if both else 1:]], axis=1)
 
     return {"arc_u": arc_u, "arc_l": arc_l, "n_below": n_below, "n_above": n_above,
             "strip_u": _strip(wing, upper, "upper", k_first),
-            "strip_l": _strip(wing, lower, "lower", k_first),
-            "ahead": np.concatenate([sections(xg[xg < x_le], lower.theta_start[0],
-                                              upper.theta_start[0]),
-                                     ring(arc_l[:1], arc_u[:1])]),
-            "behind": np.concatenate([ring(arc_l[-1:], arc_u[-1:]),
-                                      sections(xg[xg > x_te], lower.theta_start[-1],
-                                               upper.theta_start[-1])])}
+            "strip_l": _strip(wing, lower, "lower", k_first), "blunt_ends": ends,
+            "ahead": np.concatenate([sections(xg[xg < x_le], 0, ends[0]),
+                                     ring(arc_l[:1], arc_u[:1], ends[0])]),
+            "behind": np.concatenate([ring(arc_l[-1:], arc_u[-1:], ends[1]),
+                                      sections(xg[xg > x_te], -1, ends[1])])}
 
 
-def ring(arc_l, arc_u):
+def ring(arc_l, arc_u, both=False):
     """Cross-sections (k, n_below + n_above - 1, 3) from lower arcs (bottom up) and upper arcs
-    (top down) that meet at the wing's leading or trailing edge (the shared point once)."""
-    return np.concatenate([arc_l, arc_u[:, ::-1][:, 1:]], axis=1)
+    (top down) that meet at the wing's leading or trailing edge (the shared point once), or
+    with ``both`` (k, n_below + n_above, 3), both arcs' end points (a blunt edge's two)."""
+    return np.concatenate([arc_l, arc_u[:, ::-1][:, 0 if both else 1:]], axis=1)
 
 
 def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, stations=None):
@@ -235,7 +244,7 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
 
     if blocks not in (4, 6):
         raise GeometryError(f"blocks must be 4 or 6, found {blocks!r}")
-    p = layout_pieces(wing, body, upper, lower, n_body_points, stations)
+    p = layout_pieces(wing, body, upper, lower, n_body_points, stations, blunt=True)
     arc_u, arc_l, strip_u, strip_l = p["arc_u"], p["arc_l"], p["strip_u"], p["strip_l"]
     n_below, n_above = p["n_below"], p["n_above"]
     fwd, aft_net = p["ahead"], p["behind"]
@@ -263,8 +272,8 @@ def juncture_networks(wing, body, upper, lower, blocks=4, n_body_points=None, st
     nets["body aft"] = aft_net
     for net_name, end, xs_net in (("body forward", 0, fwd), ("body aft", -1, aft_net)):
         edge = xs_net[-1] if end == 0 else xs_net[0]
-        seam(net_name, names_u, "cross-section above the wing", edge[n_below - 1:],
-             arc_u[end][::-1])
+        seam(net_name, names_u, "cross-section above the wing",
+             edge[n_below - 1 + p["blunt_ends"][end]:], arc_u[end][::-1])
         seam(net_name, names_l, "cross-section below the wing", edge[:n_below], arc_l[end])
     wu, wl = ("wing upper", "wing lower") if blocks == 6 else (names_u, names_l)
     seam(wu, wl, "leading-edge lofting line", wing_u[0], wing_l[0])

@@ -141,7 +141,10 @@ class SeamCurves:
             sag = np.maximum(np.linalg.norm(self(a, b, mid) - mid, axis=1),
                              np.linalg.norm(exact[:, 1] - mid, axis=1))
             moved = np.any(exact[:, 1] != chord[:, 1], axis=1)
-            long = np.linalg.norm(exact[:, 2] - exact[:, 0], axis=1) > PIECE * self.size
+            # the piece of the edge too: where the curve jumps (the exact ends stay apart as
+            # the piece shrinks) halving would never end (held-out seed 2525 draw 11)
+            long = np.minimum(np.linalg.norm(exact[:, 2] - exact[:, 0], axis=1),
+                              (t1 - t0) * np.linalg.norm(pb - pa, axis=1)) > PIECE * self.size
             split = (sag > tol) & moved & long
             todo = []
             for k in np.flatnonzero(split):
