@@ -9,10 +9,11 @@ fillet and ``keep_area``, and meshes it with the defaults. Every run is classifi
   geometry (roots outside the fuselage continued to it; sharp runs only: a fillet adds area
   the model does not have) by juncture's ``normal_area_distribution`` and by the independent
   cell count of ``tests/union_oracle.py`` (which counts overlaps of wing-like components,
-  such as a fin standing on a wing, once), its triangle angles recorded, and how far the
-  exact curves where wing-like components meet bodies lie off its seam edges at their
-  middles (issue 12: 1e-6 of the size; measured with juncture's own ``seam_curves``, the
-  oracle is in tests/surface/test_seam_curves.py);
+  such as a fin standing on a wing, once), its triangle angles recorded (and how many
+  under 5 deg have it at a corner of their surface sharper than that: ``sharp_corners``),
+  and how far the exact curves where wing-like components meet bodies lie off its seam
+  edges at their middles (issue 12: 1e-6 of the size; measured with juncture's own
+  ``seam_curves``, the oracle is in tests/surface/test_seam_curves.py);
 - ``kept``: closed, but the re-triangulation for quality was not kept (a warning);
 - ``complete``: ``complete`` refused the deck (issue 11's business, not the mesh's);
 - ``refused``: ``mesh`` refused the surface, by message class;
@@ -84,6 +85,25 @@ def seam_sag(geometry, surface):
     return float(np.linalg.norm(exact - mid, axis=1).max(initial=0.0) / curves.size)
 
 
+def sharp_corners(surface, angles, limit=5.0):
+    """(count, inherent): triangles with an angle under ``limit`` degrees, and how many of
+    them have it at a corner of their surface (network or cap) that is itself sharper than
+    ``limit``: the sum of the surface's angles at that vertex (a tip cap's corner at a
+    section's leading or trailing edge whose included angle is under 5 deg, a fuselage
+    half at a fin's sharp leading edge). No triangulation of that surface avoids those."""
+    import numpy as np
+
+    t = surface.triangles
+    small = angles.min(axis=1) < limit
+    keys = t.astype(np.int64) * len(surface.surfaces) + surface.surface[:, None]
+    uniq, inv = np.unique(keys.ravel(), return_inverse=True)
+    total = np.zeros(len(uniq))
+    np.add.at(total, inv, angles.ravel())
+    at = np.argmin(angles, axis=1)
+    corner = total[inv.reshape(t.shape)[np.arange(len(t)), at]]
+    return int(small.sum()), int((small & (corner < limit)).sum())
+
+
 def survey_deck(job):
     import numpy as np
 
@@ -119,6 +139,7 @@ def survey_deck(job):
                 rec["cls"] = message_class(kept[0])[:120]
             ang = angles(surface.vertices, surface.triangles)
             rec["min_angle"] = float(ang.min())
+            rec["under5"], rec["under5_at_sharp_corners"] = sharp_corners(surface, ang)
             rec["share20"] = float(np.mean(ang.min(axis=1) >= 20.0))
             rec["triangles"] = int(len(surface.triangles))
             rec["seam_sag"] = seam_sag(geo, surface)
@@ -176,6 +197,9 @@ def main(argv=None):
                   f">= 5 deg on {np.mean(mins >= 5):.0%}; share >= 20 deg: median "
                   f"{np.median(s20):.3f}, worst {s20.min():.3f}; mesh seconds median "
                   f"{np.median(secs):.2f}, max {secs.max():.2f}")
+            avoid = np.array([r["under5"] - r["under5_at_sharp_corners"] for r in closed])
+            print(f"  no triangle under 5 deg on {np.mean(mins >= 5):.0%}; none but at corners "
+                  f"of the surfaces sharper than 5 deg on {np.mean(avoid == 0):.0%}")
             sag = np.array([r["seam_sag"] for r in closed if "seam_sag" in r])
             if len(sag):
                 print(f"  exact wing/body curve off the mesh's seam edges (share of size): "

@@ -293,3 +293,44 @@ def test_rows_of_an_arbitrary_body_pass_through_its_sections_corners():
             assert np.all(gap < 1e-9), (name, row[0, 0], gap.max())
             checked += int(inside.sum())
     assert checked > 20
+
+
+def test_a_blunt_trailing_edge_meeting_the_body_a_rounding_apart_adds_no_sliver_row():
+    """A blunt, swept trailing edge cut by a cylinder, with a centre-line fin (so the fuselage
+    is split into upper and lower blocks, TM-4607): its upper and lower edges meet the body
+    2e-4 apart in x, and the upper block, extended to the lower edge's point, had a row at
+    each, a rounding apart (held-out seed 2626 draw 12: 1.7e-5 ft). Their points on the plane
+    of symmetry stayed mesh vertices (triangles of 1e-3 deg). Oracles: trimesh (closed,
+    consistently wound) and the corner angles from the edge lengths (law of cosines)."""
+    import dataclasses
+
+    import trimesh
+
+    import juncture as jc
+    from juncture.model import WingLike
+    from tests.support import wing_body
+
+    cfg = wing_body(camber=2.0)
+    w = cfg["wing"]
+    up, lo = np.array(w.upper, float), np.array(w.lower, float)
+    up[:, -1], lo[:, -1] = 0.4, 0.2
+    wing = dataclasses.replace(w, upper=up, lower=lo, _poly=None)
+    half = np.array([0.0, 1.5, 2.5, 2.6, 1.8, 0.0])
+    fin = WingLike("fin 1", "fin", np.array([[44.0, 0.0, 2.0], [50.0, 0.0, 7.0]]),
+                   np.array([9.0, 4.0]), np.array([0.0, 10.0, 30.0, 50.0, 75.0, 100.0]),
+                   np.tile(half, (2, 1)), np.tile(half, (2, 1)), mirrored=False)
+    geo = jc.complete(cfg.with_component(wing).with_component(fin))
+    assert "body upper" in geo.networks
+    te_up = np.asarray(geo.intersections["wing/body upper"])[-1]
+    te_lo = np.asarray(geo.intersections["wing/body lower"])[-1]
+    assert 0.0 < abs(te_up[0] - te_lo[0]) < 1e-4 * 60.0
+
+    surface = jc.mesh(geo)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    p = surface.vertices[surface.triangles]
+    a, b, c = (np.linalg.norm(p[:, (k + 1) % 3] - p[:, (k + 2) % 3], axis=1) for k in range(3))
+    cos = np.clip(np.stack([(b * b + c * c - a * a) / (2 * b * c),
+                            (c * c + a * a - b * b) / (2 * c * a),
+                            (a * a + b * b - c * c) / (2 * a * b)], 1), -1.0, 1.0)
+    assert np.degrees(np.arccos(cos)).min() >= 5.0

@@ -245,6 +245,8 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     ang_u, ang_l = through_corners(body, xu, ang_u), through_corners(body, xl, ang_l)
     up = body.point(xu[:, None], ang_u)
     lo = body.point(xl[:, None], ang_l)
+    _close_rows(up, xu, SLIVER * (x_end - x_nose))
+    _close_rows(lo, xl, SLIVER * (x_end - x_nose))
     _end_at_points(up, xu, upper_regions, top_value)
     _end_at_points(lo, xl, lower_regions, bottom)
     for fin in fins:  # rows at a fin's stations start exactly at its points
@@ -261,6 +263,22 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
         nets["body middle"] = orient(middle_block(body, overlap, *regions, inner, n_middle,
                                                   ends), radial)
     return nets
+
+
+#: A row nearer the one before than this share of the body's length takes that row's points
+#: but its end (:func:`_close_rows`).
+SLIVER = 1e-4
+
+
+def _close_rows(net, x, gap):
+    """Rows of ``net`` at stations ``x`` less than ``gap`` after the row before take its
+    points but the last (the end on the bounding curve, set apart by :func:`_end_at_points`),
+    so the quads between them fall away and only the triangle to the new end is left. A
+    blunt trailing edge whose upper and lower edges meet the body 1.7e-5 ft apart in x gives
+    one block a row at each (:func:`_shared_ends`): two rows a rounding apart, whose points
+    on the plane of symmetry stayed mesh vertices (triangles of 1e-3 deg)."""
+    for i in np.flatnonzero(np.diff(x) < gap) + 1:   # in order: a run takes the first row's
+        net[i, :-1] = net[i - 1, :-1]
 
 
 def _one_curve(xl, th_l, xu, th_u, spans):
