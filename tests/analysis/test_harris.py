@@ -47,7 +47,7 @@ def _held_out(seed):
     return read_text(text)
 
 
-@pytest.mark.parametrize("seed", [31, 47])
+@pytest.mark.parametrize("seed", [31, pytest.param(47, marks=pytest.mark.slow)])
 def test_held_out_airplanes_match_the_independent_implementation(seed):
     cfg = _held_out(seed)
     ours = _quiet(wavedrag, cfg, 1.6, 41, 8, method="harris")["D_over_q"]

@@ -34,6 +34,7 @@ def test_keep_area_re_sets_its_nodes_when_the_stations_cross_them():
                                rtol=1e-9)
 
 
+@pytest.mark.slow  # one held-out airplane (> 6 s): make test-all
 def test_a_line_that_grazes_the_fuselage_is_named_when_the_area_cannot_be_kept():
     """A high wing whose fourth lower lofting line dips 0.26 % of the radius into the
     fuselage's top: as the body shrinks the line misses it, its fillet goes and the body

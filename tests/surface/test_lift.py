@@ -216,6 +216,7 @@ def test_seams_within_one_body_are_lifted_alike(transport):
     assert crossing.sum() > 100 and not agree[crossing].any()
 
 
+@pytest.mark.slow  # one held-out airplane (> 6 s): make test-all
 def test_a_wing_panel_cut_by_a_footprint_is_lifted_onto_its_sections():
     """A generated airplane (tests/data/generated/README.md) whose wing runs over the
     fuselage's roof and carries a fin: its assembled upper and lower surfaces cross (flat

@@ -107,14 +107,14 @@ def _dented(surface, vertex, depth, both):
     return v
 
 
-@settings(max_examples=6, deadline=None)
+@settings(max_examples=3, deadline=None)
 @given(st.integers(0, 2**31), st.booleans(), st.floats(0.02, 0.05))
 def test_the_mirrored_search_finds_every_crossing_pair(seed, both, depth):
     """Hypothesis: a wing-body meshed with both halves matched; a vertex of the wing's upper
     surface where it is thickest (on the y < 0 side alone, or on the y > 0 side with its
     mirror image) pushed down through the lower one. The crossing pairs the search on the
     y >= 0 side finds, with their images, are those the search of every pair finds
-    (check.MIRROR_SHARE < 0 searches every pair), and there are some. (6 draws here, 40 in
+    (check.MIRROR_SHARE < 0 searches every pair), and there are some. (3 draws here, 40 in
     the slow profile.)"""
     _assert_mirrored_search_finds_every_pair(seed, both, depth)
 

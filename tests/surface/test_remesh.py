@@ -353,6 +353,7 @@ def test_a_flat_triangle_loses_the_refinement_point_opposite_its_longest_edge():
     assert not _drop_flat_apexes(own, splits, gid, local)
 
 
+@pytest.mark.slow  # one held-out airplane (> 6 s): make test-all
 def test_no_edge_cuts_across_a_half_fuselage():
     """A generated airplane (tests/data/generated/README.md) whose re-triangulation joined
     the top and bottom seams of a half-fuselage near its nose by an edge through the body,
