@@ -280,3 +280,39 @@ def test_slow_a_wing_split_to_its_strips_spacing_without_the_budget_for_it(monke
 
     monkeypatch.setattr(sc, "seam_curves", lambda geometry, mesh: None)
     test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch, slow=True)
+
+
+def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
+    """A centre-line fin with a blunt trailing edge (0.3 % of the chord each side) on a
+    cylinder: its strip's root end runs from one side's root over the fuselage's top line
+    to the other's, so the strip's two sharpest turns were both there, its chains were taken
+    from one to the other and refused, and the fin was left open (no mesh: 22 open edges).
+    The strip is split at the turns farthest apart along it (its tip and its root). Oracles:
+    trimesh (closed, consistently wound), the fin's planform and ordinates (every cap vertex
+    on the tip's plane or at the blunt trailing edge, within its half-thickness of the plane
+    of symmetry), the corner angles."""
+    import trimesh
+
+    import juncture as jc
+    from juncture.model import WingLike
+    from juncture.surface.quality import triangle_angles
+    from tests.support import wing_body
+
+    half = np.array([0.0, 1.5, 2.5, 2.6, 1.8, 0.3])          # per cent of the chord
+    le, chord = np.array([[44.0, 0.0, 2.0], [50.0, 0.0, 7.0]]), np.array([9.0, 4.0])
+    fin = WingLike("fin 1", "fin", le, chord, np.array([0.0, 10.0, 30.0, 50.0, 75.0, 100.0]),
+                   np.tile(half, (2, 1)), np.tile(half, (2, 1)), mirrored=False)
+    surface = jc.mesh(jc.complete(wing_body(camber=2.0).with_component(fin)))
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    cap = surface.surfaces.index("fin 1 cap")
+    p = surface.vertices[np.unique(surface.triangles[surface.surface == cap])]
+    s = (p[:, 2] - le[0, 2]) / (le[1, 2] - le[0, 2])         # ruled, extended below the root
+    c = chord[0] + s * (chord[1] - chord[0])
+    te = le[0, 0] + s * (le[1, 0] - le[0, 0]) + c
+    z = p[:, 2]
+    tip = z == le[1, 2]
+    # on the trailing edge, or where its root end crosses the fuselage's top line (0.02 aft)
+    edge = (np.abs(p[:, 0] - te) < 0.05) & (np.abs(p[:, 1]) <= 0.003 * c + 1e-12)
+    assert np.all(tip | edge)
+    assert triangle_angles(surface.vertices, surface.triangles).min() >= 5.0

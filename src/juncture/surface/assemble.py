@@ -306,17 +306,37 @@ def strip_chains(vertices, loop):
         return None
     p = vertices[loop]
     length = np.linalg.norm(p - np.roll(p, -1, axis=0), axis=1).sum()
-    corners = _corners(p)
-    if corners is None:
+    for corners in (_corners(p), _far_corners(p)):
+        if corners is None:
+            continue
+        c0, c1 = sorted(corners)
+        a = loop[c0:c1 + 1]                                   # along the loop
+        b = np.concatenate([loop[c0::-1], loop[:c1 - 1:-1]])  # against it, c0 -> c1
+        b = b[:np.flatnonzero(b == loop[c1])[0] + 1]
+        gap = np.linalg.norm(vertices[a][:, None] - vertices[b][None, :], axis=2)
+        if max(gap.min(1).max(), gap.min(0).max()) <= STRIP_SHARE * length:
+            return a, b
+    return None
+
+
+def _far_corners(p):
+    """Of the vertices of a closed polyline p (k, 3) where it turns by more than 60 deg, the
+    two farthest apart along it (the shorter way round the longest): the ends of a thin
+    strip whose end is not one sharp turn (a centre-line fin's blunt trailing edge, whose
+    root end runs out to one side's root, over the fuselage's top line and back to the
+    other's: its two sharpest turns are both there), or None."""
+    d_in = p - np.roll(p, 1, axis=0)
+    d_out = np.roll(p, -1, axis=0) - p
+    cos = (d_in * d_out).sum(1) / np.maximum(
+        np.linalg.norm(d_in, axis=1) * np.linalg.norm(d_out, axis=1), 1e-300)
+    turns = np.flatnonzero(cos < 0.5)
+    if len(turns) < 2:
         return None
-    c0, c1 = sorted(corners)
-    a = loop[c0:c1 + 1]                                   # along the loop
-    b = np.concatenate([loop[c0::-1], loop[:c1 - 1:-1]])  # against it, c0 -> c1
-    b = b[:np.flatnonzero(b == loop[c1])[0] + 1]
-    gap = np.linalg.norm(vertices[a][:, None] - vertices[b][None, :], axis=2)
-    if max(gap.min(1).max(), gap.min(0).max()) > STRIP_SHARE * length:
-        return None
-    return a, b
+    arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(d_out, axis=1))])
+    along = np.abs(arc[turns][:, None] - arc[turns][None, :])
+    apart = np.minimum(along, arc[-1] - along)
+    i, j = np.unravel_index(np.argmax(apart), apart.shape)
+    return (int(turns[i]), int(turns[j])) if i != j else None
 
 
 def zip_strip(vertices, a, b, angles=False):
