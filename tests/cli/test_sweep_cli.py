@@ -8,6 +8,7 @@ from tests.study.test_run import write_spec
 pandas = pytest.importorskip("pandas", reason="pandas comes with the sweep extra")
 
 
+@pytest.mark.slow  # a local Dask cluster (> 7 s; the API's Dask test runs in make test)
 def test_sweep_through_a_dask_local_cluster(tmp_path, capsys):
     pytest.importorskip("distributed", reason="Dask comes with the sweep extra")
     spec = write_spec(tmp_path, z="[0.0, -1.0]")

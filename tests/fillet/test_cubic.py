@@ -296,6 +296,7 @@ def test_control_points_are_the_cubic():
                                atol=1e-12)
 
 
+@pytest.mark.slow  # one airplane meshed whole (> 5 s): make test-all
 def test_a_fillet_start_stops_at_the_plane_of_symmetry():
     """A generated high wing (tests/data/generated/README.md) whose upper intersection runs
     near the fuselage's top: 20 deg above it the cubic fillet's starts lay past the top, on

@@ -92,6 +92,7 @@ def test_the_networks_take_the_largest_count_of_points_per_section():
     assert half_points(CircularBody("body", [0.0, 1.0], [1.0, 1.0])) == 19
 
 
+@pytest.mark.slow  # one airplane meshed whole (> 4 s): make test-all
 @pytest.mark.parametrize("name", ["high_wing_tail_cone_of_few_stations.inp"])
 def test_a_long_tail_cone_is_meshed_to_its_volume(name):
     """A generated airplane (tests/data/generated/README.md) whose fuselage tapers from

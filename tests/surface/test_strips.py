@@ -73,6 +73,7 @@ def test_the_angle_zip_leaves_the_shared_corners_onto_both_sides():
     assert areas.sum() == pytest.approx(0.5 * 1.0 * 0.01, rel=1e-12)   # the triangle a-b1-a
 
 
+@pytest.mark.slow  # one airplane meshed whole (> 5 s): make test-all
 def test_a_blunt_trailing_edge_is_zipped_and_the_wing_beside_it_keeps_good_angles():
     """The generated airplane with a blunt trailing edge (tests/data/generated/README.md):
     its strip's sides are split to a few times its width, so the wing surfaces beside it need
@@ -282,6 +283,7 @@ def test_slow_a_wing_split_to_its_strips_spacing_without_the_budget_for_it(monke
     test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch, slow=True)
 
 
+@pytest.mark.slow  # one airplane meshed whole (> 5 s): make test-all
 def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
     """A centre-line fin with a blunt trailing edge (0.3 % of the chord each side) on a
     cylinder: its strip's root end runs from one side's root over the fuselage's top line
