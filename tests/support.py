@@ -137,3 +137,16 @@ def plane_feet(q, p):
     for u, v in ((a, b), (b, c), (c, a)):
         inside &= np.einsum("ij,ij->i", np.cross(v - u, foot - u), n) >= -1e-9
     return h, inside
+
+
+def smallest_angles(vertices, triangles):
+    """(t,) each triangle's smallest corner angle [deg] from its edge lengths (the law of
+    cosines): independent of juncture's triangle_angles."""
+    import numpy as np
+
+    p = np.asarray(vertices, float)[np.asarray(triangles)]
+    a, b, c = (np.linalg.norm(p[:, (k + 1) % 3] - p[:, (k + 2) % 3], axis=1) for k in range(3))
+    cos = np.clip(np.stack([(b * b + c * c - a * a) / (2 * b * c),
+                            (c * c + a * a - b * b) / (2 * c * a),
+                            (a * a + b * b - c * c) / (2 * a * b)], 1), -1.0, 1.0)
+    return np.degrees(np.arccos(cos)).min(axis=1)

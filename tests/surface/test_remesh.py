@@ -20,7 +20,7 @@ from juncture.surface.pipeline import quality
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
 from tests.deckgen import decks
-from tests.support import DATA, EXAMPLE_DECK, plane_feet
+from tests.support import DATA, EXAMPLE_DECK, plane_feet, smallest_angles
 
 GENERATED = sorted((DATA / "generated").glob("*.inp"))
 
@@ -578,11 +578,7 @@ def test_a_block_that_charts_only_in_pieces_keeps_only_the_pieces_that_do_not():
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     p = surface.vertices[surface.triangles]
-    a, b, c = (np.linalg.norm(p[:, (k + 1) % 3] - p[:, (k + 2) % 3], axis=1) for k in range(3))
-    cos = np.clip(np.stack([(b * b + c * c - a * a) / (2 * b * c),
-                            (c * c + a * a - b * b) / (2 * c * a),
-                            (a * a + b * b - c * c) / (2 * a * b)], 1), -1.0, 1.0)
-    smallest = np.degrees(np.arccos(cos)).min(axis=1)
+    smallest = smallest_angles(surface.vertices, surface.triangles)
     body = np.isin(surface.surface, [k for k, n in enumerate(surface.surfaces)
                                      if n.startswith("body") and not n.endswith("cap")])
     aft = body & (p[:, :, 0].mean(axis=1) > 121.0)
