@@ -217,13 +217,19 @@ def _min_angle(a, b, c):
 STRIP_SHARE = 0.05
 
 
+def _turns(p):
+    """(k,) cosines of the turn at each vertex of a closed polyline p (k, 3): 1 straight on,
+    -1 turning back."""
+    d_in = p - np.roll(p, 1, axis=0)
+    d_out = np.roll(p, -1, axis=0) - p
+    return (d_in * d_out).sum(1) / np.maximum(
+        np.linalg.norm(d_in, axis=1) * np.linalg.norm(d_out, axis=1), 1e-300)
+
+
 def _corners(p):
     """The two vertices of a closed polyline p (k, 3) where it turns back most sharply,
     at least two apart along it."""
-    d_in = p - np.roll(p, 1, axis=0)
-    d_out = np.roll(p, -1, axis=0) - p
-    cos = (d_in * d_out).sum(1) / np.maximum(
-        np.linalg.norm(d_in, axis=1) * np.linalg.norm(d_out, axis=1), 1e-300)
+    cos = _turns(p)
     order = np.argsort(cos)  # most negative: turning back
     first = int(order[0])
     k = len(p)
@@ -325,14 +331,11 @@ def _far_corners(p):
     strip whose end is not one sharp turn (a centre-line fin's blunt trailing edge, whose
     root end runs out to one side's root, over the fuselage's top line and back to the
     other's: its two sharpest turns are both there), or None."""
-    d_in = p - np.roll(p, 1, axis=0)
-    d_out = np.roll(p, -1, axis=0) - p
-    cos = (d_in * d_out).sum(1) / np.maximum(
-        np.linalg.norm(d_in, axis=1) * np.linalg.norm(d_out, axis=1), 1e-300)
-    turns = np.flatnonzero(cos < 0.5)
+    turns = np.flatnonzero(_turns(p) < 0.5)
     if len(turns) < 2:
         return None
-    arc = np.concatenate([[0.0], np.cumsum(np.linalg.norm(d_out, axis=1))])
+    step = np.linalg.norm(np.roll(p, -1, axis=0) - p, axis=1)
+    arc = np.concatenate([[0.0], np.cumsum(step)])
     along = np.abs(arc[turns][:, None] - arc[turns][None, :])
     apart = np.minimum(along, arc[-1] - along)
     i, j = np.unravel_index(np.argmax(apart), apart.shape)
