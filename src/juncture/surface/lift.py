@@ -200,12 +200,19 @@ def _onto_circle(body, points, corners, seam, image, tol, sized, flags):
     return out, np.where(on, radius, np.inf)
 
 
+def edges_x(wing, s, extrapolate=False):
+    """(le, te): x of a wing-like component's leading and trailing edges at span stations
+    ``s`` (the ruled surface; ``extrapolate``: extended beyond the end sections)."""
+    ends = wing.point(np.concatenate([s, s]), np.repeat([0.0, 1.0], len(s)), "upper",
+                      extrapolate=extrapolate)[:, 0]
+    return ends[:len(s)], ends[len(s):]
+
+
 def _chordwise(wing, p):
     """(span stations, chord fractions, inside the span) of points in the wing's frame."""
     lo, hi = wing.span_stations[0], wing.span_stations[-1]
     s = np.clip(p[:, wing.span_axis], lo, hi)
-    ends = wing.point(np.concatenate([s, s]), np.repeat([0.0, 1.0], len(s)), "upper")[:, 0]
-    le, te = ends[:len(s)], ends[len(s):]
+    le, te = edges_x(wing, s)
     f = (p[:, 0] - le) / np.where(te > le, te - le, 1.0)
     inside = (p[:, wing.span_axis] >= lo) & (p[:, wing.span_axis] <= hi) & (te > le)
     return s, np.clip(f, 0.0, 1.0), inside & (f >= 0.0) & (f <= 1.0)

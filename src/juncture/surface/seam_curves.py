@@ -77,10 +77,9 @@ def _box(model, size):
 def _fraction(wing, p):
     """Chord fractions of points ``p`` (k, 3) at their span stations (the ruled surface's
     leading and trailing edges, extended beyond the end sections)."""
-    s = p[:, wing.span_axis]
-    ends = wing.point(np.concatenate([s, s]), np.repeat([0.0, 1.0], len(s)), "upper",
-                      extrapolate=True)[:, 0]
-    le, te = ends[:len(s)], ends[len(s):]
+    from .lift import edges_x
+
+    le, te = edges_x(wing, p[:, wing.span_axis], extrapolate=True)
     return (p[:, 0] - le) / np.where(te > le, te - le, np.nan)
 
 
