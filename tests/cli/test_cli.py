@@ -43,6 +43,11 @@ def test_demo_runs_the_whole_pipeline(tmp_path, capsys):
                  "massprops.txt", "report.html"):
         assert (tmp_path / name).stat().st_size > 0, name
     assert (tmp_path / "views.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    import base64
+
+    report = (tmp_path / "report.html").read_text()
+    for name in ("views.png", "areas.png", "wavedrag_areas.png"):  # embedded, not redrawn
+        assert base64.b64encode((tmp_path / name).read_bytes()).decode() in report, name
     drag = json.loads((tmp_path / "wavedrag.json").read_text())
     base = drag["original"]["D_over_q"]
     assert drag["cubic fillet"]["D_over_q"] > base

@@ -175,9 +175,12 @@ def wavedrag_cases(cfg, geo, fillet, keep_area, progress):
     return cases
 
 
-def write_report(cfg, geo, out, *, command, units, cases, mass=None, surface=None):
+def write_report(cfg, geo, out, *, command, units, cases, mass=None, surface=None,
+                 written=()):
     """report.html with the wave drag of each case, the mass properties and the closed
-    surface (``surface``; by default :func:`juncture.mesh` of ``geo``, or why it has none)."""
+    surface (``surface``; by default :func:`juncture.mesh` of ``geo``, or why it has none).
+    Figures the run already wrote into ``out`` (names in ``written``) are embedded as they
+    are, not drawn again."""
     from ..errors import GeometryError
     from ..massprops import configuration_mass_properties
     from ..plots import write_report as render
@@ -191,8 +194,31 @@ def write_report(cfg, geo, out, *, command, units, cases, mass=None, surface=Non
         except GeometryError as exc:
             surface = str(exc)
     render(out / "report.html", cfg, geo, wavedrag=cases, massprops=mass, command=command,
-           units=units, surface=surface)
+           units=units, surface=surface, figures=_report_figures(cfg, geo, out, cases, units,
+                                                                 written))
     return "report.html"
+
+
+def _report_figures(cfg, geo, out, cases, units, written):
+    """caption -> PNG path or Figure for the report: the run's figures and the wave-drag
+    areas, read from ``out`` where the run wrote them (``written``), else drawn; None when
+    the run wrote none (the report draws its own)."""
+    from ..plots.figures import FIGURES
+    from ..plots.report import WAVEDRAG_CAPTION
+
+    names = [n for n in written if n in FIGURES]
+    if not names:
+        return None
+    figures = {FIGURES[n][0]: out / n for n in names}
+    if cases:
+        if "wavedrag_areas.png" in written:
+            figures[WAVEDRAG_CAPTION] = out / "wavedrag_areas.png"
+        else:
+            from ..plots.areas import plot_wavedrag_areas
+
+            figures[WAVEDRAG_CAPTION] = plot_wavedrag_areas(
+                cases, title=(cfg.title if cfg is not None else "") or geo.title, units=units)
+    return figures
 
 
 def complete(args, progress):
@@ -225,7 +251,7 @@ def complete(args, progress):
             cases = wavedrag_cases(cfg, geo, fillet, args.keep_area, bar)
             bar.step("mass properties and report")
             written.append(write_report(cfg, geo, out, command="juncture " + " ".join(
-                sys.argv[1:]), units=args.units, cases=cases))
+                sys.argv[1:]), units=args.units, cases=cases, written=written))
     _say(args, *completion_summary(cfg, geo, fillet),
          f"wrote {len(written)} files to {out}/: {', '.join(written)}")
     return 0

@@ -61,7 +61,8 @@ def demo(args, progress):
         written.append("massprops.txt")
         bar.step("report")
         written.append(write_report(cfg, geo, out, command="juncture demo", units=args.units,
-                                    cases=cases, mass=(total, parts), surface=surface))
+                                    cases=cases, mass=(total, parts), surface=surface,
+                                    written=written))
     base = cases["original"]["D_over_q"]
     for label, r in cases.items():
         _say(args, f"  wave drag {label:<26} D/q {r['D_over_q']:10.5g}  "

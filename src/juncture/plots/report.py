@@ -38,6 +38,8 @@ from .style import DEFAULT_UNITS, INTERSECTION_COLOUR, component_colour, compone
 __all__ = ["write_report", "render_report", "wireframe_data"]
 
 _PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+#: Caption of the wave-drag cases' area distributions among the report's figures.
+WAVEDRAG_CAPTION = "area distributions of the wave-drag cases"
 # (key, heading, power of the length unit: 0 for a ratio)
 _STATION_COLUMNS = (("x", "x", 1), ("area_original", "original area", 2),
                     ("area_fillet", "fillet area", 2), ("area_body", "body area", 2),
@@ -324,7 +326,7 @@ def _default_figures(cfg, geo, wavedrag, units):
     figs = {caption: fig for _, caption, fig in run_figures(
         cfg, geo, fillet=bool(geo.fillets), units=units, warn=False)}
     if wavedrag:
-        figs["area distributions of the wave-drag cases"] = plot_wavedrag_areas(
+        figs[WAVEDRAG_CAPTION] = plot_wavedrag_areas(
             wavedrag, title=(cfg.title if cfg is not None else "") or geo.title, units=units)
     return figs
 
