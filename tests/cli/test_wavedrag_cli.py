@@ -145,11 +145,13 @@ def test_converge_refines_until_it_settles_and_says_how_far_the_start_was(capsys
     assert c["D_over_q"] == pytest.approx(exact, rel=5e-3)
     assert [h[0] for h in c["history"]] == [21 * 2 ** k - (2 ** k - 1)
                                            for k in range(len(c["history"]))]
+    short = converged_wavedrag(cfg, None, n_x=21, tolerance=1e-12, max_doublings=2)
+    assert not short["converged"] and len(short["history"]) == 3  # stopped by the budget
     assert main(["wavedrag", str(PDAS_DECK), "--n-x", "21", "--n-theta", "4",
-                 "--converge", "0.02"]) == 0
+                 "--converge", "0.1"]) == 0
     out, err = capsys.readouterr()
     line = next(ln for ln in out.splitlines() if "converged: D/q" in ln)
-    assert line.startswith("M1.2: ")
+    assert line.startswith("M1.2: converged: ")  # by the tolerance, at n_x 81, NTHETA 16
     assert "juncture: warning: M1.2: the wave drag at n_x 21, NTHETA 4 is" in err
     final = [int(v) for v in line.split(" at n_x ")[1].split(" (")[0].split(", NTHETA ")]
     value = float(line.split("D/q ")[1].split(" +-")[0])
