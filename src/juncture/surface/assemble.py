@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .ends import point_ends
 from .seams import split_seams
 
 __all__ = ["SurfaceMesh", "assemble", "boundary_loops", "simple_loops", "cap_polygon",
@@ -573,6 +574,7 @@ def assemble(geometry, mirror=True, cap=True):
     nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
     if mirror:
         nets = _on_plane(geometry, nets)
+    nets = point_ends(geometry, nets)
     owners = [geometry.component_of(name) for name in nets]
     components = tuple(dict.fromkeys(owners))
     pts, tris, comp_id, surf_id, offset = [], [], [], [], 0
