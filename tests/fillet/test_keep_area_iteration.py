@@ -78,3 +78,35 @@ def test_a_line_is_named_only_if_it_both_meets_and_misses_over_the_iterates():
                               inter("wing/body lower", [1, 1, 1]))]
     assert _grazing(best, toggling, body).startswith(
         "wing/body lower lofting line 3 grazes body")
+
+
+def test_a_pair_whose_upper_line_passes_over_the_body_adds_its_area_at_the_lower_line():
+    """A high wing whose upper lofting lines 3-5 pass over the fuselage (held-out seed
+    2727, tests/data/generated/README.md). Their stations were the x of the end point on
+    the plane of symmetry, line 5's aft of the whole junction, where the fuselage was then
+    shrunk and stepped back; with a circular fillet line 6 met the step and was refused.
+    Now: it completes; such a pair's station is its lower fillet line's x; and the
+    re-designed fuselage is the original (same section area, an independent polyline
+    shoelace of its sections) aft of the junction."""
+    cfg = jc.read(KEEP / "upper_lines_passing_over_the_fuselage.inp")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(cfg, fillet="circular", keep_area=True)
+    upper = np.asarray(geo.intersections["wing/body upper"])
+    over = ~np.all(np.isfinite(upper), axis=1)
+    assert over.sum() == 3
+    start = np.asarray(geo.fillets["fillet lower"])[:, 0]  # each lower fillet line's start
+    np.testing.assert_array_equal(np.asarray(geo.stations["x"])[over], start[over, 0])
+    before, after = cfg["body"], geo.configuration["body"]
+    # aft of the deck's first station past the last fillet station (the re-designed
+    # sections are interpolated between the fillet stations and the deck's own)
+    nodes = np.asarray(before.x_global)
+    x_free = nodes[nodes > np.max(geo.stations["x"])][0]
+    x = np.linspace(x_free, nodes[-1], 200)
+
+    def shoelace(body):
+        sec = np.asarray(body._sections_at(x))          # (n, m, 2) half-sections y, z
+        y, z = sec[..., 0], sec[..., 1]
+        return np.abs(np.sum(y[:, :-1] * z[:, 1:] - y[:, 1:] * z[:, :-1], axis=1))
+
+    np.testing.assert_allclose(shoelace(after), shoelace(before), rtol=1e-12, atol=0)

@@ -210,14 +210,18 @@ def fillet_added_area(body, upper, lower, upper_inter, lower_inter, reference_bo
     Returns
     -------
     x : (m,) float
-        Station of each pair: the x of the upper fillet line's start [deck length].
+        Station of each pair: the x of the upper fillet line's start, or of the lower one's
+        where only the upper line passes over the body [deck length].
     area : (m,) float
         Added area of the two fillets (the upper and the lower wedge), one side of the
         airplane [deck length^2].
     area_total : (m,) float
         Only with ``reference_body``: fillet plus uncovered wing root, one side.
     """
-    x = upper.points[:, 0, 0]
+    # A pair whose upper line passes over the body (its fillet degenerate at Q on the plane
+    # of symmetry, far from the junction) adds only its lower wedge: at the lower line's x.
+    x = np.where(upper_inter.found | ~lower_inter.found, upper.points[:, 0, 0],
+                 lower.points[:, 0, 0])
     i_u = np.where(upper_inter.found[:, None], upper_inter.points, upper.start)
     i_l = np.where(lower_inter.found[:, None], lower_inter.points, lower.start)
     fillet = wedge_area(body, upper, i_u) + wedge_area(body, lower, i_l)

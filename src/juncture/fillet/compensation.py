@@ -35,7 +35,8 @@ class Compensation:
         The re-designed body: the original stations plus every fillet station, radius reduced
         so that body area + fillet area equals the original area at each fillet station.
     x : (m,) float
-        Fillet stations (x of the upper fillet lines' starts) of the final iteration.
+        Fillet stations (x of the upper fillet lines' starts; of the lower ones where only
+        the upper line passes over the body) of the final iteration.
     area_original, area_fillet, area_fillet_only, area_body : (m,) float
         pi r0(x)^2; the area the re-design takes from the body: the fillets' added area plus
         (``compensate="section"``) the wing root they uncover as the body shrinks; the
