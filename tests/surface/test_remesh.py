@@ -20,7 +20,7 @@ from juncture.surface.pipeline import quality
 from juncture.surface.quality import triangle_angles
 from juncture.surface.remesh import remesh
 from tests.deckgen import decks
-from tests.support import DATA, EXAMPLE_DECK, plane_feet, smallest_angles
+from tests.support import DATA, EXAMPLE_DECK, PDAS_DECK, plane_feet, smallest_angles
 
 GENERATED = sorted((DATA / "generated").glob("*.inp"))
 
@@ -588,3 +588,34 @@ def test_a_block_that_charts_only_in_pieces_keeps_only_the_pieces_that_do_not():
     aft = body & (p[:, :, 0].mean(axis=1) > 121.0)
     assert smallest[aft & (p[:, :, 0].mean(axis=1) > 208.0)].min() >= 1.0
     assert np.mean(smallest[aft] >= 20.0) >= 0.98
+
+
+def test_held_triangles_are_re_triangulated_on_the_assembled_surface():
+    """``remesh(..., held=...)`` (the retry where lifted triangles crossed): the held
+    triangles are charted on their own and their new points stay on them, where the same
+    patch's points are otherwise lifted onto the exact body (off its flat facets); the
+    surface stays closed and valid, with good angles."""
+    from juncture.surface.lift import surface_lift
+
+    geo = _geo(PDAS_DECK)
+    assembled = assemble(geo)
+    lift = surface_lift(geo, assembled)
+    k = assembled.surfaces.index("body forward")
+    held = assembled.surface == k
+    size = np.ptp(assembled.vertices, axis=0).max()
+    facets = assembled.vertices[assembled.triangles[held]]
+
+    def off_facets(better):
+        own = np.unique(better.triangles[better.surface == k])
+        shared = np.unique(better.triangles[better.surface != k])
+        inner = np.setdiff1d(own, shared)
+        inner = inner[inner >= len(assembled.vertices)]       # new, not on a seam
+        assert len(inner) > 20
+        return max(_distance_on_triangles(q, facets) for q in better.vertices[inner[:80]])
+
+    lifted = remesh(assembled, lift=lift)
+    kept = remesh(assembled, lift=lift, held=held)
+    assert off_facets(lifted) > 1e-6 * size
+    assert off_facets(kept) < 1e-12 * size
+    assert not check_mesh(kept.vertices, kept.triangles).failures()
+    assert smallest_angles(kept.vertices, kept.triangles).min() >= 5.0

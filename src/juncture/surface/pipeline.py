@@ -228,10 +228,13 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     :func:`~juncture.surface.check.check_mesh` report.
 
     Where re-triangulated surfaces cross (a pod's tip, curved faster than the new triangles
-    follow) or share a triangle (two surfaces that make the same one across a narrow corner
-    between them), those surfaces keep their own triangles and the rest is re-triangulated
-    again (up to ``RETRIES`` times). Where it still fails, the surface as it was (report None),
-    with a :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
+    follow; a wing passing just under a narrowing tail cone), the triangles there are
+    re-triangulated again with their new points left on the assembled surface, not lifted
+    (:func:`_held_near`); where that fails too, or surfaces share a triangle (two surfaces
+    that make the same one across a narrow corner between them), those surfaces keep their
+    own triangles and the rest is re-triangulated again (up to ``RETRIES`` times). Where it
+    still fails, the surface as it was (report None), with a
+    :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
     ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points on the exact
     surfaces; ``curvature`` and ``depth`` (None: the defaults) size the triangles on them.
     """
@@ -285,11 +288,14 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
     if surface.open_loops:
         return surface, None, None
-    keep = set()
-    for _ in range((RETRIES if retries is None else retries) + 1):
+    keep, held = set(), None
+    tries = (RETRIES if retries is None else retries) + 1
+    while tries:
+        tries -= 1
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
-                            tolerance=tolerance, keep=keep, lift=lift, lines=lines, **sizing)
+                            tolerance=tolerance, keep=keep, lift=lift, lines=lines,
+                            held=held, **sizing)
         except GeometryError as exc:
             failures = [str(exc)]
             break
@@ -299,11 +305,58 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
         failures = report.failures()
         if not failures:
             return better, report, None
+        if held is None and tries and _crossing_only(report):
+            held = _held_near(surface, better, report)   # first, only where they crossed
+            tries += 1
+            continue
         more = _troubled_surfaces(better, report) - keep
         if not more:
             break
         keep |= more
+        held = None
     return surface, None, failures
+
+
+def _crossing_only(report):
+    """Whether the only failure is triangles that cross."""
+    return bool(report.intersecting_pairs) and not (
+        report.open_edges or report.misoriented_edges or report.nonmanifold_edges)
+
+
+#: Input triangles within this many of its longest edges of a crossing triangle are held
+#: (:func:`_held_near`).
+NEAR_CROSSING = 2.0
+
+
+def _held_near(surface, better, report):
+    """(m,) bool over ``surface.triangles``: those that come within :data:`NEAR_CROSSING`
+    times its longest edge of a re-triangulated triangle that crosses another, and their
+    neighbours. In the next try their patches are charted in pieces, these re-triangulated
+    with their new points left on the assembled triangles
+    (:func:`juncture.surface.remesh.remesh`, ``held``)."""
+    from scipy.spatial import cKDTree
+
+    from .check import self_intersections
+
+    pairs = report.pairs if report.pairs is not None else \
+        self_intersections(better.vertices, better.triangles)
+    p = better.vertices[better.triangles[np.unique(pairs)]]
+    reach = NEAR_CROSSING * np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2).max(axis=1)
+    q = surface.vertices[surface.triangles]
+    centre, radius = q.mean(axis=1), _radius(q)
+    near = np.zeros(len(surface.triangles), bool)
+    found = cKDTree(centre).query_ball_point(p.mean(axis=1), reach + radius.max())
+    for c, r, rows in zip(p.mean(axis=1), reach, found):
+        rows = np.asarray(rows, int)
+        near[rows[np.linalg.norm(centre[rows] - c, axis=1) <= r + radius[rows]]] = True
+    ring = np.zeros(len(surface.vertices), bool)
+    ring[surface.triangles[near].ravel()] = True
+    return ring[surface.triangles].any(axis=1)
+
+
+def _radius(q):
+    """(m,) the largest distance of a triangle's corners from its centre."""
+    return np.linalg.norm(q - q.mean(axis=1, keepdims=True), axis=2).max(axis=1)
 
 
 #: Re-triangulations after the first, each keeping the surfaces that crossed.

@@ -498,7 +498,8 @@ def _edge_points(tri, n, cons, parent, uv, pts):
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
-           turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH, lines=None):
+           turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH, lines=None,
+           held=None):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -510,7 +511,10 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     mesh's size of them, and the input triangles under its corners and centre turn by no
     more than ``turn`` degrees (so it spans no more of a curved body's facets than the
     networks' own spacing). The surfaces in ``keep`` (indices into ``mesh.surfaces``) keep
-    their triangles, taking their neighbours' seam points as fans. See the module docstring
+    their triangles, taking their neighbours' seam points as fans. The triangles ``held``
+    ((m,) bool over ``mesh.triangles``; where re-triangulated surfaces crossed) are charted
+    apart from the rest of their patch and re-triangulated with their new points left on
+    them, not lifted (the assembled surface does not cross itself). See the module docstring
     for how seams stay shared. ``lift(points, corners, component, surface)`` (e.g.
     :func:`juncture.surface.lift.body_lift`) moves new points from the triangle with vertex
     ids ``corners`` onto the exact surface; a seam point only where both sides lift it to the
@@ -529,7 +533,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
-                                                   lines, TINY * size)
+                                                   lines, TINY * size, held)
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
@@ -586,12 +590,13 @@ def _splits(mesh, lift):
                   set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
 
 
-def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0):
+def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0, held=None):
     """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
     about ``min_angle``); a patch in ``keep``
     or one that cannot be charted keeps its triangles, as does one no larger than ``tiny``
-    (the cap of a section a rounding's size across); the mirror image of a patch charted
+    (the cap of a section a rounding's size across); a patch with rows ``held`` is
+    charted in pieces, those of the held rows not lifted; the mirror image of a patch charted
     whole (:func:`juncture.surface.mirror.twins`) is (its rows, that patch's charts), and
     takes their triangles mirrored at the end."""
     from .strips import presplit, strip, tip_and_strip
@@ -602,22 +607,26 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0):
     whole = {}                          # primary: its charts, where it is charted whole
     for i in [i for i in range(len(groups)) if i not in twin] + list(twin):
         rows = groups[i]
+        if held is not None and held[rows].any():
+            charted += _pieces(mesh, rows[held[rows]], kept, None)   # on the triangles
+            charted += _pieces(mesh, rows[~held[rows]], kept, lift)
+            continue
         if whole.get(twin.get(i)):
             copied.append((rows, whole[twin[i]]))
             continue
-        held = mesh.surface[rows[0]] in keep or _extent(mesh, rows) <= tiny
-        thin = None if held else strip(mesh, rows)
+        hold = mesh.surface[rows[0]] in keep or _extent(mesh, rows) <= tiny
+        thin = None if hold else strip(mesh, rows)
         if thin is not None:
             strips.append(thin)
             presplit(thin, mesh.vertices, splits, min_angle)
             continue
-        parts = None if held else tip_and_strip(mesh, rows)
+        parts = None if hold else tip_and_strip(mesh, rows)
         if parts is not None:           # the strip zipped, the tip charted
             rows, thin = parts
             strips.append(thin)
             presplit(thin, mesh.vertices, splits, min_angle)
         pieces = []
-        got = None if held else charts(mesh, rows, kept=pieces)
+        got = None if hold else charts(mesh, rows, kept=pieces)
         kept.extend(pieces)
         if got is None:
             kept.append(rows)
@@ -628,6 +637,24 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0):
             charted.append(patch)
     _mark_free(charted, splits)
     return charted, kept, strips, copied
+
+
+def _pieces(mesh, rows, kept, lift):
+    """The charts of the connected pieces of the triangle ``rows`` (what a patch leaves
+    around its held triangles); a piece that does not chart is appended to ``kept``."""
+    from .patches import _connected
+
+    out = []
+    for part in _connected(mesh, rows) if len(rows) else ():
+        pieces = []
+        got = charts(mesh, part, kept=pieces)
+        kept.extend(pieces)
+        if got is None:
+            kept.append(part)
+        for patch in got or ():
+            patch.lift = lift
+            out.append(patch)
+    return out
 
 
 def _extent(mesh, rows):
