@@ -619,3 +619,21 @@ def test_held_triangles_are_re_triangulated_on_the_assembled_surface():
     assert off_facets(kept) < 1e-12 * size
     assert not check_mesh(kept.vertices, kept.triangles).failures()
     assert smallest_angles(kept.vertices, kept.triangles).min() >= 5.0
+
+
+def test_frozen_triangles_keep_their_own_points():
+    """``remesh(..., frozen=...)`` (the next retry where even those crossed): the frozen
+    triangles keep their points, taking their neighbours' seam points as fans; the rest is
+    re-triangulated; closed and valid."""
+    geo = _geo(PDAS_DECK)
+    assembled = assemble(geo)
+    k = assembled.surfaces.index("body forward")
+    frozen = assembled.surface == k
+    better = remesh(assembled, frozen=frozen)
+    own = np.unique(better.triangles[better.surface == k])
+    shared = np.unique(better.triangles[better.surface != k])
+    assert np.all(np.setdiff1d(own, shared) < len(assembled.vertices))  # no new inner point
+    assert np.count_nonzero(better.surface == k) >= np.count_nonzero(frozen)
+    assert not check_mesh(better.vertices, better.triangles).failures()
+    rest = better.surface != k
+    assert smallest_angles(better.vertices, better.triangles[rest]).min() >= 5.0

@@ -230,13 +230,14 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     Where re-triangulated surfaces cross (a pod's tip, curved faster than the new triangles
     follow; a wing passing just under a narrowing tail cone), the triangles there are
     re-triangulated again with their new points left on the assembled surface, not lifted
-    (:func:`_held_near`); where that fails too, or surfaces share a triangle (two surfaces
-    that make the same one across a narrow corner between them), those surfaces keep their
-    own triangles and the rest is re-triangulated again (up to ``RETRIES`` times). Where it
-    still fails, the surface as it was (report None), with a
-    :class:`~juncture.errors.JunctureWarning`. An open surface is returned as it is.
-    ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points on the exact
-    surfaces; ``curvature`` and ``depth`` (None: the defaults) size the triangles on them.
+    (:func:`_held_near`), then, where they still cross, kept as they are; where that fails
+    too, or surfaces share a triangle (two surfaces that make the same one across a narrow
+    corner between them), those surfaces keep their own triangles and the rest is
+    re-triangulated again (up to ``RETRIES`` times). Where it still fails, the surface as it
+    was (report None), with a :class:`~juncture.errors.JunctureWarning`. An open surface is
+    returned as it is. ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points
+    on the exact surfaces; ``curvature`` and ``depth`` (None: the defaults) size the
+    triangles on them.
     """
     better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance, check,
                                          lift, curvature, depth)
@@ -288,14 +289,14 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
     if surface.open_loops:
         return surface, None, None
-    keep, held = set(), None
+    keep, held, frozen, local = set(), None, None, 2
     tries = (RETRIES if retries is None else retries) + 1
     while tries:
         tries -= 1
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
                             tolerance=tolerance, keep=keep, lift=lift, lines=lines,
-                            held=held, **sizing)
+                            held=held, frozen=frozen, **sizing)
         except GeometryError as exc:
             failures = [str(exc)]
             break
@@ -305,15 +306,20 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
         failures = report.failures()
         if not failures:
             return better, report, None
-        if held is None and tries and _crossing_only(report):
-            held = _held_near(surface, better, report)   # first, only where they crossed
-            tries += 1
+        if local and tries and _crossing_only(report):
+            # first only where they crossed: re-triangulated unlifted, then kept
+            near = _held_near(surface, better, report)
+            if held is None:
+                held = near
+            else:
+                frozen = held | near
+            local, tries = local - 1, tries + 1
             continue
         more = _troubled_surfaces(better, report) - keep
         if not more:
             break
         keep |= more
-        held = None
+        held = frozen = None
     return surface, None, failures
 
 

@@ -499,7 +499,7 @@ def _edge_points(tri, n, cons, parent, uv, pts):
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
            turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH, lines=None,
-           held=None):
+           held=None, frozen=None):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -514,7 +514,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     their triangles, taking their neighbours' seam points as fans. The triangles ``held``
     ((m,) bool over ``mesh.triangles``; where re-triangulated surfaces crossed) are charted
     apart from the rest of their patch and re-triangulated with their new points left on
-    them, not lifted (the assembled surface does not cross itself). See the module docstring
+    them, not lifted (the assembled surface does not cross itself); the triangles
+    ``frozen`` (the same) keep theirs, taking seam points as fans. See the module docstring
     for how seams stay shared. ``lift(points, corners, component, surface)`` (e.g.
     :func:`juncture.surface.lift.body_lift`) moves new points from the triangle with vertex
     ids ``corners`` onto the exact surface; a seam point only where both sides lift it to the
@@ -533,7 +534,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
-                                                   lines, TINY * size, held)
+                                                   lines, TINY * size, (held, frozen))
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
@@ -590,26 +591,31 @@ def _splits(mesh, lift):
                   set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
 
 
-def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0, held=None):
+def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
+                    held=(None, None)):
     """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
     about ``min_angle``); a patch in ``keep``
     or one that cannot be charted keeps its triangles, as does one no larger than ``tiny``
-    (the cap of a section a rounding's size across); a patch with rows ``held`` is
-    charted in pieces, those of the held rows not lifted; the mirror image of a patch charted
+    (the cap of a section a rounding's size across); a patch with rows in ``held`` (two
+    masks or None: re-triangulated unlifted, kept) is charted in pieces, those of the first
+    not lifted, those of the second kept; the mirror image of a patch charted
     whole (:func:`juncture.surface.mirror.twins`) is (its rows, that patch's charts), and
     takes their triangles mirrored at the end."""
     from .strips import presplit, strip, tip_and_strip
 
     charted, kept, strips, copied = [], [], [], []
+    flat, frozen = (np.zeros(len(mesh.triangles), bool) if m is None else m for m in held)
     groups = patches(mesh, lines)
     twin = {} if splits.mirror is None else twins(mesh, groups, splits.mirror)
     whole = {}                          # primary: its charts, where it is charted whole
     for i in [i for i in range(len(groups)) if i not in twin] + list(twin):
         rows = groups[i]
-        if held is not None and held[rows].any():
-            charted += _pieces(mesh, rows[held[rows]], kept, None)   # on the triangles
-            charted += _pieces(mesh, rows[~held[rows]], kept, lift)
+        if flat[rows].any() or frozen[rows].any():
+            if frozen[rows].any():
+                kept.append(rows[frozen[rows]])
+            charted += _pieces(mesh, rows[flat[rows] & ~frozen[rows]], kept, None)
+            charted += _pieces(mesh, rows[~flat[rows] & ~frozen[rows]], kept, lift)
             continue
         if whole.get(twin.get(i)):
             copied.append((rows, whole[twin[i]]))
