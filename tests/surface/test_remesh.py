@@ -637,3 +637,45 @@ def test_frozen_triangles_keep_their_own_points():
     assert not check_mesh(better.vertices, better.triangles).failures()
     rest = better.surface != k
     assert smallest_angles(better.vertices, better.triangles[rest]).min() >= 5.0
+
+
+@pytest.mark.parametrize("wedge_deg", [90.0, 10.0])
+def test_a_lift_may_rise_from_a_seam_by_a_quarter_of_the_wedge_of_air_there(wedge_deg):
+    """remesh._mark_slopes: two flat squares meeting along the y axis with ``wedge_deg`` of
+    air between them; the first's boundary edges on the seam may be risen from at
+    tan(wedge / 4) (90 deg: 0.414), never less than 1 / TAPER (10 deg: 0.1, as before for
+    every seam), its open edges at 1 / TAPER; taper() then gives a point a quarter of the
+    lift's length from the seam that slope times four of its lift."""
+    import juncture.surface.remesh as rm
+    from juncture.surface.patches import charts, taper
+
+    w = np.radians(wedge_deg)
+    g = np.linspace(0.0, 1.0, 5)
+    u, v = np.meshgrid(g, g, indexing="ij")
+    flat = np.stack([u.ravel(), v.ravel(), 0.0 * u.ravel()], 1)              # z = 0, up
+    other = np.stack([np.cos(w) * u.ravel(), v.ravel(), np.sin(w) * u.ravel()], 1)
+    quads = [(i * 5 + j, (i + 1) * 5 + j, (i + 1) * 5 + j + 1, i * 5 + j + 1)
+             for i in range(4) for j in range(4)]
+    tri = np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
+    vertices = np.concatenate([flat, other[5:]])
+    ids = np.concatenate([np.arange(5), np.arange(25, 45)])   # the u = 0 row is shared
+    mesh = SurfaceMesh(vertices, np.concatenate([tri, ids[tri][:, ::-1]]),
+                       np.zeros(64, int), np.repeat([0, 1], 32), ("c",), ("a", "b"))
+    p = mesh.vertices[mesh.triangles]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert np.all(n[:32, 2] > 0)                            # the flat square faces up ...
+    assert np.all(np.einsum("ij,j->i", n[32:], [np.sin(w), 0.0, -np.cos(w)]) > 0)  # ... into air
+    (patch,) = charts(mesh, np.arange(32))
+    patch.free = np.ones(len(patch.edges), bool)
+    rm._mark_slopes([patch], mesh)
+    ends = mesh.vertices[patch.ids[patch.edges]]
+    seam = np.all(ends[:, :, 0] == 0.0, axis=1)
+    expect = max(np.tan(w / 4.0), 1.0 / rm.TAPER)
+    np.testing.assert_allclose(patch.slope[seam], expect, rtol=1e-12)
+    np.testing.assert_allclose(patch.slope[~seam], 1.0 / rm.TAPER)
+    # a point of the chart off the middle of the seam, lift 0.1: its share of the lift
+    mid = patch.uv[patch.edges[seam]].mean(axis=(0, 1))
+    inward = patch.uv.mean(axis=0) - mid
+    q = mid + 0.025 * inward / np.linalg.norm(inward)
+    share = taper(patch, q[None], np.array([0.1]), 1.0 / rm.TAPER)[0]
+    assert share == pytest.approx(min(1.0, 0.25 * expect), abs=0.02)

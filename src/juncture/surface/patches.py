@@ -72,7 +72,9 @@ class Patch:
     out: np.ndarray | None = None        # current triangles (global ids)
     lift: object = None                  # lift(points, corners, component, surface)
     free: np.ndarray | None = None       # boundary edges whose split points stay on them
-    near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2)
+    near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2,
+    #                                      each sample's slope)
+    slope: np.ndarray | None = None      # per boundary edge: how steeply a lift may rise from it
     keys: list | None = None             # boundary edges as (global a, global b), a < b
     spread: float = 1.0                  # how much the chart's scale varies (spread())
     pts: np.ndarray | None = None        # chart coordinates of the current triangulation's
@@ -333,15 +335,18 @@ def area3(p):
     return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
 
-def taper(patch, query, reach):
-    """(k,) the share of its lift each chart point takes: its distance from the patch's free
-    boundary edges (``patch.free``: seams whose two sides do not lift alike) over ``reach``,
-    at most 1. The distance is that to the nearest of :data:`SAMPLES` points spread along
-    those edges (a k-d tree built once per patch) less half their spacing: never more than
-    the true distance, so a point near a seam is never lifted further than its share."""
+def taper(patch, query, move, slope):
+    """(k,) the share of its lift (``move``, (k,)) each chart point takes: its distance from
+    the patch's free boundary edges (``patch.free``: seams whose two sides do not lift alike)
+    times the slope allowed there (``patch.slope`` per boundary edge, else ``slope``) over
+    ``move``, at most 1. The distance is that to the nearest of :data:`SAMPLES` points
+    spread along those edges (a k-d tree built once per patch) less half their spacing:
+    never more than the true distance, so a point near a seam is never lifted further than
+    its share."""
     from scipy.spatial import cKDTree
 
-    edges = patch.edges if patch.free is None else patch.edges[patch.free]
+    free = np.ones(len(patch.edges), bool) if patch.free is None else patch.free
+    edges = patch.edges[free]
     if not len(edges):
         return np.ones(len(query))
     if patch.near is None:
@@ -351,9 +356,11 @@ def taper(patch, query, reach):
         row = np.repeat(np.arange(len(a)), count + 1)
         t = np.arange(len(row)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
         t = t / np.repeat(count, count + 1)
+        steep = np.full(len(edges), slope) if patch.slope is None else patch.slope[free]
         patch.near = (cKDTree(a[row] + t[:, None] * (b - a)[row]),
-                      0.5 * float((length / count).max()))
-    tree, half = patch.near
-    far = float(reach.max(initial=0.0)) + half     # beyond: lifted in full, not searched
-    dist = np.maximum(tree.query(query, distance_upper_bound=far)[0] - half, 0.0)
-    return np.clip(dist / np.maximum(reach, 1e-300), 0.0, 1.0)
+                      0.5 * float((length / count).max()), np.append(steep[row], np.inf))
+    tree, half, steep = patch.near
+    far = float((move / steep[:-1].min()).max(initial=0.0)) + half   # beyond: lifted in full
+    dist, nearest = tree.query(query, distance_upper_bound=far)
+    dist = np.maximum(dist - half, 0.0)
+    return np.clip(dist * steep[nearest] / np.maximum(move, 1e-300), 0.0, 1.0)

@@ -462,7 +462,7 @@ def _tapered(patch, points, lifted, query):
     """``points`` moved towards ``lifted`` in full, or near the patch's free boundary
     (chart points ``query``) by the share :func:`_lifted` describes."""
     move = np.linalg.norm(lifted - points, axis=1)
-    w = taper(patch, query, TAPER * move)
+    w = taper(patch, query, move, 1.0 / TAPER)
     return points + w[:, None] * (lifted - points)
 
 
@@ -642,6 +642,7 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
             patch.lift = lift
             charted.append(patch)
     _mark_free(charted, splits)
+    _mark_slopes(charted, mesh)
     return charted, kept, strips, copied
 
 
@@ -681,6 +682,41 @@ def _mark_free(charted, splits):
         free = ~splits.move.agree(seams[:, 0], seams[:, 1])[inverse]
     for patch, part in zip(charted, np.split(free, np.cumsum(list(map(len, ends)))[:-1])):
         patch.free = part
+
+
+def _mark_slopes(charted, mesh):
+    """``patch.slope`` of every charted patch: per boundary edge, tan of a quarter of the
+    wedge of air between the patch's assembled triangle on it and the other surface's
+    (:func:`juncture.surface.patches.taper`), at least 1 / :data:`TAPER`. Two surfaces
+    lifted towards each other from a seam then each take at most half of the wedge between
+    them: a canard meeting the fuselage at 90 deg lets the fuselage's points rise onto its
+    circle within 2.4 times the lift of the seam, where 1 / TAPER kept points 10 times their
+    lift away from it short of it (by a tenth of the radius where a block's facets span a
+    quarter of its circle)."""
+    if not charted:
+        return
+    n = len(mesh.vertices)
+    t = np.asarray(mesh.triangles)
+    keys = np.sort(np.stack([t[:, [0, 1, 2]], t[:, [1, 2, 0]]], axis=2), axis=2)
+    keys = (keys[..., 0] * n + keys[..., 1]).ravel()      # (3m,): edge key per (row, corner)
+    order = np.argsort(keys, kind="stable")
+    p = mesh.vertices[t]
+    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
+    owner = np.repeat(np.arange(len(t)), 3)[order]
+    sorted_keys = keys[order]
+    for patch in charted:
+        ends = np.sort(patch.ids[patch.edges], axis=1)
+        k = ends[:, 0] * n + ends[:, 1]
+        lo = np.searchsorted(sorted_keys, k, "left")
+        hi = np.searchsorted(sorted_keys, k, "right")
+        slope = np.full(len(k), 1.0 / TAPER)
+        two = hi - lo == 2
+        a, b = owner[lo[two]], owner[lo[two] + 1]
+        cos = np.clip(np.einsum("ij,ij->i", normal[a], normal[b]), -1.0, 1.0)
+        wedge = np.pi - np.arccos(cos)
+        slope[two] = np.clip(np.tan(wedge / 4.0), 1.0 / TAPER, 1e3)
+        patch.slope = slope
 
 
 def _area(patch, vertices, edge_length):
