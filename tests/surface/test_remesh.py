@@ -5,6 +5,7 @@ own vertices (kept bit for bit), an independent point-to-triangle distance, and 
 charts (a flat strip, a cylinder) for the conformal flattening.
 """
 
+import types
 import warnings
 
 import numpy as np
@@ -642,9 +643,10 @@ def test_frozen_triangles_keep_their_own_points():
 @pytest.mark.parametrize("wedge_deg", [90.0, 10.0])
 def test_a_lift_may_rise_from_a_seam_by_a_quarter_of_the_wedge_of_air_there(wedge_deg):
     """remesh._mark_slopes: two flat squares meeting along the y axis with ``wedge_deg`` of
-    air between them; the first's boundary edges on the seam may be risen from at
-    tan(wedge / 4) (90 deg: 0.414), never less than 1 / TAPER (10 deg: 0.1, as before for
-    every seam), its open edges at 1 / TAPER; taper() then gives a point a quarter of the
+    air between them, the first taken for a circular body's: its boundary edges on the seam
+    may be risen from at tan(wedge / 4) (90 deg: 0.414), never less than 1 / TAPER (10 deg:
+    0.1, as before for every seam), its open edges at 1 / TAPER (and all of them at that
+    off a circular body); taper() then gives a point a quarter of the
     lift's length from the seam that slope times four of its lift."""
     import juncture.surface.remesh as rm
     from juncture.surface.patches import charts, taper
@@ -667,6 +669,9 @@ def test_a_lift_may_rise_from_a_seam_by_a_quarter_of_the_wedge_of_air_there(wedg
     assert np.all(np.einsum("ij,j->i", n[32:], [np.sin(w), 0.0, -np.cos(w)]) > 0)  # ... into air
     (patch,) = charts(mesh, np.arange(32))
     patch.free = np.ones(len(patch.edges), bool)
+    rm._mark_slopes([patch], mesh)
+    assert patch.slope is None                     # not on a circular body: as before
+    patch.lift = types.SimpleNamespace(bodies=frozenset({0}))
     rm._mark_slopes([patch], mesh)
     ends = mesh.vertices[patch.ids[patch.edges]]
     seam = np.all(ends[:, :, 0] == 0.0, axis=1)

@@ -77,8 +77,10 @@ def surface_lift(geometry, mesh):
     """One ``lift`` for :func:`~juncture.surface.remesh.remesh` doing :func:`body_lift` on
     circular bodies and :func:`wing_lift` on wing-like components (None if neither applies).
     ``lift.seam``: the exact curves where wing-like components meet bodies
-    (:func:`juncture.surface.seam_curves.seam_curves`; None where there are none)."""
-    lifts = [f for f in (body_lift(geometry, mesh), wing_lift(geometry, mesh)) if f]
+    (:func:`juncture.surface.seam_curves.seam_curves`; None where there are none);
+    ``lift.bodies``: the ids of the mesh's components that are circular bodies."""
+    bodies = body_lift(geometry, mesh)
+    lifts = [f for f in (bodies, wing_lift(geometry, mesh)) if f]
     if not lifts:
         return None
 
@@ -95,6 +97,7 @@ def surface_lift(geometry, mesh):
         return points, size
 
     lift.both = both
+    lift.bodies = bodies.components if bodies else frozenset()   # circular bodies' ids
     from .seam_curves import seam_curves
 
     lift.seam = seam_curves(geometry, mesh)
@@ -169,6 +172,7 @@ def _lifter(geometry, mesh, kind, move, classify):
         return both(points, corners, component, surface, sized=False)[0]
 
     lift.both = both
+    lift.components = frozenset(models)
     return lift
 
 

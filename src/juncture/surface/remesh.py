@@ -685,7 +685,8 @@ def _mark_free(charted, splits):
 
 
 def _mark_slopes(charted, mesh):
-    """``patch.slope`` of every charted patch: per boundary edge, tan of a quarter of the
+    """``patch.slope`` of every charted patch on a circular body (``patch.lift.bodies``; a
+    wing's thin sections crossed each other so): per boundary edge, tan of a quarter of the
     wedge of air between the patch's assembled triangle on it and the other surface's
     (:func:`juncture.surface.patches.taper`), at least 1 / :data:`TAPER`. Two surfaces
     lifted towards each other from a seam then each take at most half of the wedge between
@@ -706,6 +707,8 @@ def _mark_slopes(charted, mesh):
     owner = np.repeat(np.arange(len(t)), 3)[order]
     sorted_keys = keys[order]
     for patch in charted:
+        if patch.component not in getattr(patch.lift, "bodies", ()):
+            continue
         ends = np.sort(patch.ids[patch.edges], axis=1)
         k = ends[:, 0] * n + ends[:, 1]
         lo = np.searchsorted(sorted_keys, k, "left")
