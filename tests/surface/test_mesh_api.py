@@ -384,4 +384,4 @@ def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_lo
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     angles = smallest_angles(surface.vertices, surface.triangles)
-    assert np.mean(angles >= 20.0) > 0.99 and angles.min() > 3.0
+    assert np.mean(angles >= 20.0) > 0.99 and angles.min() > 2.0
