@@ -694,7 +694,8 @@ def _mark_slopes(charted, mesh):
     circle within 2.4 times the lift of the seam, where 1 / TAPER kept points 10 times their
     lift away from it short of it (by a tenth of the radius where a block's facets span a
     quarter of its circle)."""
-    if not charted:
+    on = [p for p in charted if p.component in getattr(p.lift, "bodies", ())]
+    if not on:
         return
     n = len(mesh.vertices)
     t = np.asarray(mesh.triangles)
@@ -706,9 +707,7 @@ def _mark_slopes(charted, mesh):
     normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
     owner = np.repeat(np.arange(len(t)), 3)[order]
     sorted_keys = keys[order]
-    for patch in charted:
-        if patch.component not in getattr(patch.lift, "bodies", ()):
-            continue
+    for patch in on:
         ends = np.sort(patch.ids[patch.edges], axis=1)
         k = ends[:, 0] * n + ends[:, 1]
         lo = np.searchsorted(sorted_keys, k, "left")
