@@ -697,28 +697,24 @@ def _mark_slopes(charted, mesh):
     on = [p for p in charted if p.component in getattr(p.lift, "bodies", ())]
     if not on:
         return
-    n = len(mesh.vertices)
+    from .chart import patch_edges
+
     t = np.asarray(mesh.triangles)
-    keys = np.sort(np.stack([t[:, [0, 1, 2]], t[:, [1, 2, 0]]], axis=2), axis=2)
-    keys = (keys[..., 0] * n + keys[..., 1]).ravel()      # (3m,): edge key per (row, corner)
-    order = np.argsort(keys, kind="stable")
+    _, und, uses, inverse = patch_edges(t)
+    order = np.argsort(inverse, kind="stable")          # each edge's rows, in turn
+    start = np.cumsum(uses) - uses
+    owner = np.tile(np.arange(len(t)), 3)[order]
+    a, b = owner[start], owner[np.minimum(start + 1, len(owner) - 1)]
     p = mesh.vertices[t]
     normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
-    owner = np.repeat(np.arange(len(t)), 3)[order]
-    sorted_keys = keys[order]
-    for patch in on:
+    cos = np.clip(np.einsum("ij,ij->i", normal[a], normal[b]), -1.0, 1.0)
+    steep = np.where(uses == 2, np.clip(np.tan((np.pi - np.arccos(cos)) / 4.0),
+                                        1.0 / TAPER, 1e3), 1.0 / TAPER)
+    for patch in on:            # its boundary edges among the mesh's (all of them there)
         ends = np.sort(patch.ids[patch.edges], axis=1)
-        k = ends[:, 0] * n + ends[:, 1]
-        lo = np.searchsorted(sorted_keys, k, "left")
-        hi = np.searchsorted(sorted_keys, k, "right")
-        slope = np.full(len(k), 1.0 / TAPER)
-        two = hi - lo == 2
-        a, b = owner[lo[two]], owner[lo[two] + 1]
-        cos = np.clip(np.einsum("ij,ij->i", normal[a], normal[b]), -1.0, 1.0)
-        wedge = np.pi - np.arccos(cos)
-        slope[two] = np.clip(np.tan(wedge / 4.0), 1.0 / TAPER, 1e3)
-        patch.slope = slope
+        _, at = unique_pairs(np.concatenate([und, ends]), return_inverse=True)
+        patch.slope = steep[at[len(und):]]
 
 
 def _area(patch, vertices, edge_length):
