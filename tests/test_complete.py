@@ -319,3 +319,35 @@ def test_single_network_lines_on_an_arbitrary_section_fuselage(fillet):
         assert np.isfinite(f.points).all()
         assert np.abs(body.signed_distance(f.points[:, 0])).max() < 1e-9 * body.length
         assert body.signed_distance(f.points.reshape(-1, 3)).min() > -1e-9 * body.length
+
+
+def test_a_single_network_line_beside_a_sharp_trailing_edge_stays_in_the_air(monkeypatch):
+    """A held-out airplane (tests/data/generated/README.md): the lower fillet line
+    re-interpolated at the last upper x lies between a fillet line and the sharp point at the
+    trailing edge, 0.009 ft long. Its inner points, put onto the wing's lower surface, lay
+    inside the elliptical fuselage and, put onto that, inside the wing (2.8e-6 L deep by an
+    independent model of the deck's wing): they are now on the chord from the line's start on
+    the body to its end on the wing. Counterfactual: without that step they are inside."""
+    import juncture.single_network as sn
+    from tests.deckgen.references import WingLikeRef
+    from tests.support import DATA
+
+    cfg = jc.read(DATA / "generated" / "fillet"
+                  / "single_network_line_beside_a_sharp_trailing_edge.inp")
+    w = cfg["wing"]
+    ref = WingLikeRef("wing", w.le, w.chord, w.x_over_c, w.upper, w.lower, w.camber)
+
+    def depths(geo):
+        lines = np.concatenate([geo.fillets["fillet upper"], geo.fillets["fillet lower"]])
+        body = geo.configuration["body"]
+        return (ref.depth(lines.reshape(-1, 3), extend_root=True).max() / body.length,
+                -body.signed_distance(lines.reshape(-1, 3)).min() / body.length)
+
+    geo = jc.complete(cfg, "cubic", single_network=True)
+    assert np.isfinite(geo.fillets["fillet lower"]).all()
+    in_wing, in_body = depths(geo)
+    assert in_wing <= 1e-12 and in_body <= 1e-12
+    starts = [line for line in geo.log if "fillet start line" in line]
+    assert len(starts) == 2 and all(line.endswith("max gap 0") for line in starts)
+    monkeypatch.setattr(sn, "_chord_where_buried", lambda wing, body, out, ok: out)
+    assert depths(jc.complete(cfg, "cubic", single_network=True))[0] > 1e-6

@@ -234,6 +234,7 @@ def interpolated_lines(wing, body, lines, ends, X):
     end = _wing_point_at_x(wing, lines.side, pts[sb, -1], pts[sb + 1, -1], wb, x_end)
     out[ok, -1] = end[ok]
     out[ok, 0, 0] = X[ok]
+    out = _chord_where_buried(wing, body, out, ok)
     log = [f"single network: {lines.side} fillet line {j + 1} keeps its start "
            f"(x = {B[j, 0]:.6g}): no fillet start lies at x = {X[j]:.6g}"
            for j in np.flatnonzero(~ok)]
@@ -504,6 +505,25 @@ def _onto_wing(wing, side, pts):
     inside = (frac > 0) & (frac < 1) & (p[:, a_t] > lo) & (p[:, a_t] < up)
     p[:, a_t] = np.where(inside, lo if side == "lower" else up, p[:, a_t])
     return p.reshape(shape + (3,))
+
+
+def _chord_where_buried(wing, body, out, ok):
+    """Fillet lines (m, n, 3) whose inner points still lie inside a solid after they were
+    put onto the wing and then onto the body (a line a few thousandths of a foot long beside
+    a sharp trailing edge, where the wing's surface at a point's chord fraction lies inside
+    the body and the body's inside the wing: the point is in the solids' overlap) have
+    those points on the straight chord from the line's start on the body to its end on the
+    wing, which crosses the wedge of air between the two surfaces."""
+    inner = np.zeros(out.shape[:2], bool)
+    inner[:, 1:-1] = ok[:, None]
+    if not inner.any():
+        return out
+    buried = inner & ~_outside(wing, body, out)
+    if not buried.any():
+        return out
+    t = np.linspace(0.0, 1.0, out.shape[1])[None, :, None]
+    chord = (1 - t) * out[:, :1] + t * out[:, -1:]
+    return np.where(buried[..., None], chord, out)
 
 
 def _onto_body(body, pts, every=False):
