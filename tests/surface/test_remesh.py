@@ -684,3 +684,57 @@ def test_a_lift_may_rise_from_a_seam_by_a_quarter_of_the_wedge_of_air_there(wedg
     q = mid + 0.025 * inward / np.linalg.norm(inward)
     share = taper(patch, q[None], np.array([0.1]), 1.0 / rm.TAPER)[0]
     assert share == pytest.approx(min(1.0, 0.25 * expect), abs=0.02)
+
+
+@pytest.mark.parametrize("sag_share", [0.0, 0.5, 1.0, None])
+def test_a_point_by_a_seam_is_left_short_by_at_most_the_seams_own_sag(sag_share):
+    """patches.taper: a point 0.025 from a free seam, lift 0.1, slope 1 / TAPER: where the
+    seam stands off its curve by ``sag_share`` of that lift (None: not measured, as before),
+    the point is left short by that sag less 0.025 / TAPER, never more than its lift: on a
+    seam that lies on its curve it is lifted in full (a body block's far facets stood a
+    tenth of the radius inside where the old rule held every point by its whole lift)."""
+    import juncture.surface.remesh as rm
+    from juncture.surface.patches import charts, taper
+
+    g = np.linspace(0.0, 1.0, 5)
+    u, v = np.meshgrid(g, g, indexing="ij")
+    vertices = np.stack([u.ravel(), v.ravel(), 0.0 * u.ravel()], 1)
+    quads = [(i * 5 + j, (i + 1) * 5 + j, (i + 1) * 5 + j + 1, i * 5 + j + 1)
+             for i in range(4) for j in range(4)]
+    tri = np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
+    mesh = SurfaceMesh(vertices, tri, np.zeros(32, int), np.zeros(32, int), ("c",), ("a",))
+    (patch,) = charts(mesh, np.arange(32))
+    ends = mesh.vertices[patch.ids[patch.edges]]
+    patch.free = np.all(ends[:, :, 0] == 0.0, axis=1)        # the seam: u = 0
+    move, d, slope = 0.1, 0.025, 1.0 / rm.TAPER
+    sag = None if sag_share is None else (lambda at: np.full(len(at), sag_share * move))
+    mid = patch.uv[patch.edges[patch.free]].mean(axis=(0, 1))
+    inward = patch.uv.mean(axis=0) - mid
+    scale = np.linalg.norm(patch.uv[patch.edges[0, 1]] - patch.uv[patch.edges[0, 0]]) / \
+        np.linalg.norm(ends[0, 1] - ends[0, 0])                   # chart units per foot
+    q = mid + d * scale * inward / np.linalg.norm(inward)
+    share = taper(patch, q[None], np.array([move]), slope, sag)[0]
+    held = move if sag_share is None else sag_share * move
+    expect = 1.0 - max(held - d * scale * slope, 0.0) / move
+    assert share == pytest.approx(expect, abs=0.03)
+    if sag_share == 0.0:
+        assert share == 1.0
+
+
+def test_held_triangles_are_lifted_away_from_where_surfaces_crossed():
+    """remesh._away_from: held triangles' new points within a crossing's radius of its
+    centre stay where they are; beyond, they rise by at most their distance past it over
+    TAPER, and in full where that allows; without crossings they are not lifted at all."""
+    import juncture.surface.remesh as rm
+
+    def up(points, corners, component, surface):          # the exact surface: z + 1
+        return points + np.array([0.0, 0.0, 1.0])
+
+    assert rm._away_from(up, None) is None and rm._away_from(None, np.ones((1, 4))) is None
+    lift = rm._away_from(up, np.array([[0.0, 0.0, 0.0, 2.0]]))
+    x = np.array([0.0, 1.0, 2.0, 3.0, 2.0 + rm.TAPER, 50.0])
+    pts = np.stack([x, 0 * x, 0 * x], axis=1)
+    out = lift(pts, None, 0, 0)
+    np.testing.assert_array_equal(out[:, :2], pts[:, :2])
+    np.testing.assert_allclose(out[:, 2], [0.0, 0.0, 0.0, 1.0 / rm.TAPER, 1.0, 1.0],
+                               atol=1e-15)

@@ -73,13 +73,14 @@ class Patch:
     lift: object = None                  # lift(points, corners, component, surface)
     free: np.ndarray | None = None       # boundary edges whose split points stay on them
     near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2,
-    #                                      each sample's slope)
+    #                                      each sample's slope and sag)
     slope: np.ndarray | None = None      # per boundary edge: how steeply a lift may rise from it
     keys: list | None = None             # boundary edges as (global a, global b), a < b
     spread: float = 1.0                  # how much the chart's scale varies (spread())
     pts: np.ndarray | None = None        # chart coordinates of the current triangulation's
     local: np.ndarray | None = None      # vertices, and its triangles over them
     undo: tuple | None = None            # dropped points (chart, ids), worst angle before
+    xyz: np.ndarray | None = None        # 3-D points of the chart vertices (assembled)
 
 
 def patches(mesh, lines=None):
@@ -270,7 +271,7 @@ def _patch(mesh, rows, tri, ids, uv, edges, cross, _, find):
                   int(mesh.surface[rows[0]]), cross / double[:, None], 0.5 * double,
                   float(np.ptp(p.reshape(-1, 3), axis=0).max()), find,
                   _shortest(uv, tri), _kept(mesh.vertices[ids], tri, edges),
-                  spread=spread(uv[tri], double))
+                  spread=spread(uv[tri], double), xyz=mesh.vertices[ids])
 
 
 def spread(flat, double):
@@ -335,14 +336,19 @@ def area3(p):
     return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
 
-def taper(patch, query, move, slope):
-    """(k,) the share of its lift (``move``, (k,)) each chart point takes: its distance from
-    the patch's free boundary edges (``patch.free``: seams whose two sides do not lift alike)
-    times the slope allowed there (``patch.slope`` per boundary edge, else ``slope``) over
-    ``move``, at most 1. The distance is that to the nearest of :data:`SAMPLES` points
-    spread along those edges (a k-d tree built once per patch) less half their spacing:
-    never more than the true distance, so a point near a seam is never lifted further than
-    its share."""
+def taper(patch, query, move, slope, sag=None):
+    """(k,) the share of its lift (``move``, (k,)) each chart point takes. Near the patch's
+    free boundary edges (``patch.free``: seams whose two sides do not lift alike, straight
+    chords of an exact curve) a point is left short of its exact surface by at most the
+    seam's own sag there (``sag``: the lift, (s,), of chart points (s, 2) on those edges;
+    without it, the whole lift) less its distance from the edges times the slope allowed
+    there (``patch.slope`` per boundary edge, else ``slope``): the step from the chord to
+    the exact surface rises no steeper than that, and where the seam lies on its curve a
+    point off it is lifted in full however far its assembled facet stands inside (a body
+    block whose facets span a quarter of its circle). The distance is that to the nearest
+    of :data:`SAMPLES` points spread along those edges (a k-d tree built once per patch)
+    less half their spacing: never more than the true distance, so a point near a seam is
+    never lifted further than its share."""
     from scipy.spatial import cKDTree
 
     free = np.ones(len(patch.edges), bool) if patch.free is None else patch.free
@@ -356,11 +362,24 @@ def taper(patch, query, move, slope):
         row = np.repeat(np.arange(len(a)), count + 1)
         t = np.arange(len(row)) - np.repeat(np.cumsum(count + 1) - count - 1, count + 1)
         t = t / np.repeat(count, count + 1)
+        at = a[row] + t[:, None] * (b - a)[row]
         steep = np.full(len(edges), slope) if patch.slope is None else patch.slope[free]
-        patch.near = (cKDTree(a[row] + t[:, None] * (b - a)[row]),
-                      0.5 * float((length / count).max()), np.append(steep[row], np.inf))
-    tree, half, steep = patch.near
-    far = float((move / steep[:-1].min()).max(initial=0.0)) + half   # beyond: lifted in full
+        deep = np.full(len(at), np.inf) if sag is None else _seam_sag(sag, at, row)
+        patch.near = (cKDTree(at), 0.5 * float((length / count).max()),
+                      np.append(steep[row], np.inf), np.append(deep, 0.0))
+    tree, half, steep, deep = patch.near
+    reach = np.minimum(float(move.max(initial=0.0)), deep[:-1].max())
+    far = float(reach / steep[:-1].min()) + half                # beyond: lifted in full
     dist, nearest = tree.query(query, distance_upper_bound=far)
     dist = np.maximum(dist - half, 0.0)
-    return np.clip(dist * steep[nearest] / np.maximum(move, 1e-300), 0.0, 1.0)
+    short = np.maximum(np.minimum(move, deep[nearest]) - dist * steep[nearest], 0.0)
+    return np.clip(1.0 - short / np.maximum(move, 1e-300), 0.0, 1.0)
+
+
+def _seam_sag(sag, at, row):
+    """(s,) the lift ``sag`` of the seam samples ``at``, each at least the largest of its
+    edge's (the sag is measured at samples; a point between them may stand further off)."""
+    deep = np.asarray(sag(at), float)
+    most = np.zeros(row.max() + 1)
+    np.maximum.at(most, row, deep)
+    return most[row]

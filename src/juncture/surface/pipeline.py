@@ -289,14 +289,14 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
     if surface.open_loops:
         return surface, None, None
-    keep, held, frozen, local = set(), None, None, 2
+    keep, held, frozen, local, crossings = set(), None, None, 2, None
     tries = (RETRIES if retries is None else retries) + 1
     while tries:
         tries -= 1
         try:
             better = remesh(surface, min_angle=min_angle, edge_length=edge_length,
                             tolerance=tolerance, keep=keep, lift=lift, lines=lines,
-                            held=held, frozen=frozen, **sizing)
+                            held=held, frozen=frozen, crossings=crossings, **sizing)
         except GeometryError as exc:
             failures = [str(exc)]
             break
@@ -308,9 +308,9 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
             return better, report, None
         if local and tries and _crossing_only(report):
             # first only where they crossed: re-triangulated unlifted, then kept
-            near = _held_near(surface, better, report)
+            near, found = _held_near(surface, better, report)
             if held is None:
-                held = near
+                held, crossings = near, found
             else:
                 frozen = held | near
             local, tries = local - 1, tries + 1
@@ -319,7 +319,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
         if not more:
             break
         keep |= more
-        held = frozen = None
+        held = frozen = crossings = None
     return surface, None, failures
 
 
@@ -357,7 +357,7 @@ def _held_near(surface, better, report):
         near[rows[np.linalg.norm(centre[rows] - c, axis=1) <= r + radius[rows]]] = True
     ring = np.zeros(len(surface.vertices), bool)
     ring[surface.triangles[near].ravel()] = True
-    return ring[surface.triangles].any(axis=1)
+    return ring[surface.triangles].any(axis=1), np.column_stack([p.mean(axis=1), reach])
 
 
 def _radius(q):

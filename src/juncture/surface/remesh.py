@@ -462,7 +462,13 @@ def _tapered(patch, points, lifted, query):
     """``points`` moved towards ``lifted`` in full, or near the patch's free boundary
     (chart points ``query``) by the share :func:`_lifted` describes."""
     move = np.linalg.norm(lifted - points, axis=1)
-    w = taper(patch, query, move, 1.0 / TAPER)
+
+    def sag(at):
+        on, under = locate(patch.uv, patch.tri, patch.xyz, at, patch.find)
+        lift = patch.lift(on, patch.ids[patch.tri[under]], patch.component, patch.surface)
+        return np.linalg.norm(lift - on, axis=1)
+
+    w = taper(patch, query, move, 1.0 / TAPER, sag)
     return points + w[:, None] * (lifted - points)
 
 
@@ -499,7 +505,7 @@ def _edge_points(tri, n, cons, parent, uv, pts):
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
            turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH, lines=None,
-           held=None, frozen=None):
+           held=None, frozen=None, crossings=None):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -534,7 +540,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
     charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
-                                                   lines, TINY * size, (held, frozen))
+                                                   lines, TINY * size, (held, frozen),
+                                                   crossings)
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
@@ -592,7 +599,7 @@ def _splits(mesh, lift):
 
 
 def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
-                    held=(None, None)):
+                    held=(None, None), crossings=None):
     """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
     (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
     about ``min_angle``); a patch in ``keep``
@@ -614,7 +621,8 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
         if flat[rows].any() or frozen[rows].any():
             if frozen[rows].any():
                 kept.append(rows[frozen[rows]])
-            charted += _pieces(mesh, rows[flat[rows] & ~frozen[rows]], kept, None)
+            charted += _pieces(mesh, rows[flat[rows] & ~frozen[rows]], kept,
+                               _away_from(lift, crossings))
             charted += _pieces(mesh, rows[~flat[rows] & ~frozen[rows]], kept, lift)
             continue
         if whole.get(twin.get(i)):
@@ -644,6 +652,30 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
     _mark_free(charted, splits)
     _mark_slopes(charted, mesh)
     return charted, kept, strips, copied
+
+
+def _away_from(lift, crossings):
+    """``lift`` for held triangles: None (new points stay on them) without ``crossings``;
+    with them ((k, 4): centres and radii of where re-triangulated surfaces crossed), a point
+    within a radius of a centre is not lifted and one further away is lifted by at most
+    its distance beyond that over :data:`TAPER` (a held facet may span a quarter of a body's
+    circle and ten feet along it: its far parts, left on it, stood a tenth of the radius
+    inside)."""
+    if lift is None or crossings is None or not len(crossings):
+        return None
+    from scipy.spatial import cKDTree
+
+    tree, radius = cKDTree(crossings[:, :3]), np.append(crossings[:, 3], np.inf)
+
+    def held_lift(points, corners, component, surface):
+        full = lift(points, corners, component, surface)
+        move = np.linalg.norm(full - points, axis=1)
+        dist, near = tree.query(points)
+        room = np.maximum(dist - radius[near], 0.0) / TAPER
+        w = np.clip(room / np.maximum(move, 1e-300), 0.0, 1.0)
+        return points + w[:, None] * (full - points)
+
+    return held_lift
 
 
 def _pieces(mesh, rows, kept, lift):
