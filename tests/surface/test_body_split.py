@@ -329,3 +329,91 @@ def test_a_blunt_trailing_edge_meeting_the_body_a_rounding_apart_adds_no_sliver_
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     assert smallest_angles(surface.vertices, surface.triangles).min() >= 5.0
+
+
+def test_a_low_wing_leading_edge_just_aft_of_a_body_station_leaves_no_folded_rows(monkeypatch):
+    """A held-out airplane (tests/data/generated/README.md): a low wing's leading edge meets
+    the elliptical fuselage 0.09 ft aft of a body station, and the blocks' bounding curve
+    falls from the horizontal to the wing's root there. Stations added so that it turns
+    little a step lay closer than SLIVER of the length and were closed onto the row before:
+    both blocks fanned to the curve and the lower one's rows ran up and back down, over the
+    upper block (78 crossing pairs, the mesh refused). Now no station is added nearer
+    than that: every row of each block runs one way round the section (the surface
+    parameter, the body's own), and the assembled surface passes every check (exact
+    predicates). Counterfactual: the stations closer than that, closed onto the row before
+    whatever their ends (as before _close_rows looked at them, the next test), fold rows."""
+    import warnings
+
+    import juncture as jc
+    import juncture.surface.body_split as bs
+    from juncture.surface.check import check_mesh
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "assembly" / \
+        "low_wing_leading_edge_just_aft_of_a_body_station.inp"
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        cfg = jc.read(deck)
+        geo = jc.complete(cfg)
+        assert _folded_rows(geo) == 0
+        surface = jc.mesh(geo, min_angle=0)
+        assert check_mesh(surface.vertices, surface.triangles).failures() == []
+        turning, close = bs._turning, bs._close_rows
+        monkeypatch.setattr(bs, "_turning", lambda x, th, spans, turn, gap=0.0:
+                            turning(x, th, spans, turn))
+        monkeypatch.setattr(bs, "_close_rows", lambda net, x, gap, ang=None:
+                            close(net, x, gap))
+        assert _folded_rows(jc.complete(cfg)) > 0
+    # _turning itself: 0.09 ft in which the curve turns by 1, steps of at most 0.1 wanted
+    # (ten), but none shorter than 0.013: six equal steps
+    added = turning(np.array([0.0, 0.09]), np.array([0.0, -1.0]), [], 0.1, 0.013)
+    np.testing.assert_allclose(np.diff(np.r_[0.0, added, 0.09]), 0.015, rtol=1e-12)
+
+
+def _folded_rows(geo):
+    """How many rows of the fuselage's upper and lower blocks run one way round the section
+    and then back (by the body's own surface parameter, or angle on a circular body)."""
+    body = geo.configuration["body"]
+    out = 0
+    for name in ("body upper", "body lower"):
+        for row in np.asarray(geo.networks[name]):
+            if hasattr(body, "parameter_of"):
+                s = body.parameter_of(row)
+            else:
+                c = body.center_at(row[:, 0])
+                s = np.unwrap(np.arctan2(row[:, 2] - c[:, 1], row[:, 1] - c[:, 0]))
+            s = np.diff(s)
+            s = s[np.abs(s) > 1e-12]
+            out += int(s.size and (s.min() < 0.0 < s.max()))
+    return out
+
+
+def test_a_row_a_rounding_aft_of_another_keeps_its_points_where_its_end_lies_back(monkeypatch):
+    """A held-out airplane (tests/data/generated/README.md) with a cubic fillet and
+    keep_area: a tail's leading edge meets the fuselage 0.004 ft aft of a row that ends at
+    the wing's root below it. Rows that near the one before take its points but their end
+    (_close_rows): this one ran down to the wing's root and back up to the tail's edge,
+    folded over the block beside it (70 crossing pairs, the mesh refused). Now a row whose
+    end lies back among those points keeps its own: no row folds, and the assembled
+    surface passes every check. Counterfactual: without the rows' angles it folds."""
+    import warnings
+
+    import juncture as jc
+    import juncture.surface.body_split as bs
+    from juncture.surface.check import check_mesh
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "assembly" / \
+        "tail_leading_edge_a_rounding_aft_of_a_wing_root_row.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        cfg = jc.read(deck)
+        geo = jc.complete(cfg, "cubic", keep_area=True)
+        assert _folded_rows(geo) == 0
+        surface = jc.mesh(geo, min_angle=0)
+        assert check_mesh(surface.vertices, surface.triangles).failures() == []
+        close = bs._close_rows
+        monkeypatch.setattr(bs, "_close_rows", lambda net, x, gap, ang=None:
+                            close(net, x, gap))
+        assert _folded_rows(jc.complete(cfg, "cubic", keep_area=True)) > 0
