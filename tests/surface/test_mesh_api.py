@@ -385,3 +385,28 @@ def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_lo
     assert tm.is_watertight and tm.is_winding_consistent
     angles = smallest_angles(surface.vertices, surface.triangles)
     assert np.mean(angles >= 20.0) > 0.99 and angles.min() > 2.0
+
+
+@pytest.mark.slow  # one held-out airplane meshed twice (~40 s): make test-all
+def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing(monkeypatch):
+    """A held-out airplane (tests/data/generated/README.md) whose re-triangulated fuselage
+    block and low wing crossed: the retry held the fuselage's network triangles near the
+    crossing, facets ten feet long and a quarter of the circle round, with their new points
+    left on them (0.27 ft inside, the volume 1.7 % short of the union's). Held points are
+    now lifted but within a crossing's reach, rising from there at 1 / TAPER: the enclosed
+    volume is within 0.5 % of the union's cells (tests/union_oracle.py), closed and wound
+    consistently (trimesh). Counterfactual: held points left unlifted, over 1 % short."""
+    import juncture.surface.remesh as rm
+
+    deck = DATA / "generated" / "remesh" / \
+        "canted_fin_between_a_low_wing_and_the_tail_cone_top.inp"
+    geo = _complete(deck)
+    cells = union_volume(geo.configuration, n=121, cells=1500)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", jc.JunctureWarning)   # the re-triangulation kept
+        surface = jc.mesh(geo)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    assert abs(tm.volume / cells - 1.0) < 0.005
+    monkeypatch.setattr(rm, "_away_from", lambda lift, crossings: None)
+    assert jc.mesh(geo).volume() / cells - 1.0 < -0.01
