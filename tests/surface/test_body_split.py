@@ -417,3 +417,22 @@ def test_a_row_a_rounding_aft_of_another_keeps_its_points_where_its_end_lies_bac
         monkeypatch.setattr(bs, "_close_rows", lambda net, x, gap, ang=None:
                             close(net, x, gap))
         assert _folded_rows(jc.complete(cfg, "cubic", keep_area=True)) > 0
+
+
+def test_a_corner_found_twice_a_hair_apart_takes_one_point_of_a_row():
+    """through_corners: at the joint of two segments an arbitrary body finds each corner of
+    the section once from either side's parameters (0.2560 and 0.2561); anchored twice,
+    two of the row's points sat a hair apart and the triangles between them had angles
+    of 0.002 deg. Corners nearer than a quarter step are one: the row holds 0.3 once,
+    0.6, and its other points where they were."""
+    import types
+
+    from juncture.surface.body_split import through_corners
+
+    body = types.SimpleNamespace(corners=lambda x: np.array([0.6, 0.3, 0.3000001]))
+    row = np.linspace(0.0, 1.0, 11)
+    out = through_corners(body, np.array([0.0]), row[None, :])[0]
+    assert np.count_nonzero(np.abs(out - 0.3) < 1e-3) == 1
+    assert 0.6 in out and 0.3 in out and 0.3000001 not in out
+    assert np.all(np.diff(out) > 0.0)
+    np.testing.assert_allclose(out, row, rtol=0, atol=1e-15)   # the nearest points moved

@@ -169,3 +169,52 @@ def test_a_blunt_trailing_edge_cut_by_the_body_is_closed_by_the_aft_block():
     off = (np.abs(capped[:, 0] - x_te) > 0.05) | (capped[:, 2] < band[0]) | (capped[:, 2] > band[1])
     assert not np.any(off & ~tip), "a cap runs off the wing's trailing edge"
     assert triangle_angles(surface.vertices, surface.triangles).min() >= 5.0
+
+
+OCTAGON = DATA / "generated" / "assembly" / \
+    "arbitrary_body_four_blocks_octagon_ahead_of_the_wing.inp"
+
+
+def test_the_mesh_of_an_arbitrary_fuselage_keeps_its_polygon(monkeypatch):
+    """A held-out airplane's arbitrary fuselage, a half-octagon of nine points, in the
+    four-block layout (tests/data/generated/README.md): the rows ahead of the wing hold the
+    section's corners (juncture.surface.networks.arc_points; at equal steps of the surface
+    parameter they cut them), and every corner the deck gives at its stations there is a
+    mesh vertex, in both halves. Where the fuselage keeps one section (x 26.6 to 66.5, ahead of
+    the wing) the mesh's section is the deck's polygon: its area equals the shoelace area
+    of the deck's points to 1e-7 (no new point is put back on an arbitrary section, and the
+    re-triangulation keeps the corner lines as edges, juncture.surface.creases).
+    Counterfactual: without the corner lines kept, triangles across them cut the corners
+    (more than 0.1 % of the section)."""
+    import warnings
+
+    import juncture.surface.remesh as rm
+    from tests.support import section_area
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(OCTAGON))
+        body = geo.configuration["body"]
+        k = int(np.flatnonzero(body.x == 45.273)[0])
+        y, z = body.sections[k].T
+        polygon = abs(np.sum(y[:-1] * z[1:] - y[1:] * z[:-1]))         # both halves
+        x = np.array([30.0, 40.0, 50.0, 60.0])
+
+        def short(surface):
+            return np.array([1.0 - section_area(surface.vertices, surface.triangles, xi)
+                             / polygon for xi in x])
+
+        surface = jc.mesh(geo)
+        assert np.abs(short(surface)).max() < 1e-7
+        for station in (15.928, 26.642, 45.273):        # the corners are mesh vertices
+            half = body.sections[int(np.flatnonzero(body.x == station)[0])]
+            d = np.diff(half, axis=0)
+            cos = np.einsum("ij,ij->i", d[:-1], d[1:]) / (
+                np.linalg.norm(d[:-1], axis=1) * np.linalg.norm(d[1:], axis=1))
+            corner = half[1:-1][cos < np.cos(np.radians(1.0))]
+            both = np.concatenate([corner, corner * [-1.0, 1.0]])
+            on = surface.vertices[surface.vertices[:, 0] == station][:, 1:]
+            assert len(corner) == 7
+            assert np.linalg.norm(both[:, None] - on[None], axis=2).min(axis=1).max() < 1e-9
+        monkeypatch.setattr(rm, "mark_creases", lambda charted, mesh, lines: None)
+        assert short(jc.mesh(geo)).max() > 1e-3

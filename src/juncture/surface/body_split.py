@@ -375,6 +375,8 @@ def through_corners(body, x, par):
         gap = NEAR_END * (hi - lo) / (row.size - 1)
         c = corners(xi)
         c = np.sort(c[(c > lo + gap) & (c < hi - gap)])
+        if c.size > 1:  # one corner on each side of a joint: the two a hair apart, once
+            c = c[np.r_[True, np.diff(c) > gap]]
         if row[-1] < row[0]:
             c = c[::-1]
         if c.size:

@@ -107,12 +107,22 @@ def refined_stations(body, stations=None, sag=None):
     return np.sort(np.concatenate([x] + added), kind="stable")
 
 
-def arc_points(body, x, theta_from, theta_to, n):
-    """(m, n, 3) points on the body circles at stations x, theta from -> to (equal steps)."""
+def arc_points(body, x, theta_from, theta_to, n, corners=False):
+    """(m, n, 3) points on the body circles at stations x, theta from -> to (equal steps);
+    with ``corners``, on an arbitrary section through its corners between the ends
+    (:func:`juncture.surface.body_split.through_corners`), so that the network's facets
+    keep the polygon the deck gives: at equal steps of the surface parameter they cut its
+    corners, and no new point of a re-triangulation is put back on an arbitrary section (a
+    held-out airplane's fuselage ahead of the wing stood 0.7 % of its section inside)."""
     t = np.linspace(0.0, 1.0, n)
     th = np.asarray(theta_from, float)[:, None] + t[None, :] * (
         np.asarray(theta_to, float) - np.asarray(theta_from, float))[:, None]
-    return body.point(np.asarray(x, float)[:, None], th)
+    x = np.asarray(x, float)
+    if corners:
+        from .body_split import through_corners
+
+        th = through_corners(body, x, th)
+    return body.point(x[:, None], th)
 
 
 def arc_to(body, x, theta_from, theta_to, n, end):
@@ -122,7 +132,7 @@ def arc_to(body, x, theta_from, theta_to, n, end):
     body point at ``theta_to``). Where the arc is empty (``theta_to`` equals ``theta_from``:
     the wing covers that side of the body, :mod:`juncture.misses`) every point is ``end``.
     """
-    arc = arc_points(body, x, theta_from, theta_to, n)
+    arc = arc_points(body, x, theta_from, theta_to, n, corners=True)
     end = np.asarray(end, float)
     arc[:, -1] = end
     empty = np.abs(np.asarray(theta_to, float) - np.asarray(theta_from, float)) <= 1e-12
@@ -194,8 +204,10 @@ def layout_pieces(wing, body, upper, lower, n_body_points=None, stations=None, b
 
     def sections(xs, k, both):
         lo, hi = lower.theta_start[k], upper.theta_start[k]
-        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, lo), n_below)
-        above = arc_points(body, xs, np.full(xs.size, hi), np.full(xs.size, top), n_above)
+        below = arc_points(body, xs, np.full(xs.size, bottom), np.full(xs.size, lo), n_below,
+                           corners=True)
+        above = arc_points(body, xs, np.full(xs.size, hi), np.full(xs.size, top), n_above,
+                           corners=True)
         return np.concatenate([below, above[:, 0 if both else 1:]], axis=1)
 
     return {"arc_u": arc_u, "arc_l": arc_l, "n_below": n_below, "n_above": n_above,

@@ -81,6 +81,7 @@ class Patch:
     local: np.ndarray | None = None      # vertices, and its triangles over them
     undo: tuple | None = None            # dropped points (chart, ids), worst angle before
     xyz: np.ndarray | None = None        # 3-D points of the chart vertices (assembled)
+    creases: int = 0                     # inner edges kept (juncture.surface.creases)
 
 
 def patches(mesh, lines=None):

@@ -247,17 +247,21 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
 
 
 def _line_points(geometry, surface, lift=None):
-    """(n,) whether each vertex of ``surface`` is an intersection point of ``geometry``
+    """(n,) int8: 1 where a vertex of ``surface`` is an intersection point of ``geometry``
     (:func:`juncture.surface.imprint.on_lines`) or lies on an exact curve of ``lift.seam``
     (:mod:`juncture.surface.seam_curves`): a network may turn at a crease only there
-    (:data:`juncture.surface.patches.CREASE`)."""
+    (:data:`juncture.surface.patches.CREASE`); :data:`~juncture.surface.creases.CORNER_LINE`
+    where it lies on a corner line of an arbitrary section (kept as an edge,
+    :func:`juncture.surface.creases.mark_creases`); else 0."""
+    from .creases import CORNER_LINE, corner_points
     from .imprint import on_lines
 
-    lines = np.zeros(len(surface.vertices), bool)
-    lines[list(on_lines(geometry, surface.vertices))] = True
+    lines = np.zeros(len(surface.vertices), np.int8)
+    lines[corner_points(geometry, surface)] = CORNER_LINE
+    lines[list(on_lines(geometry, surface.vertices))] = 1
     curves = getattr(lift, "seam", None)
     for *_, on in (curves.lines if curves is not None else ()):
-        lines |= on
+        lines[on] = 1
     return lines
 
 

@@ -36,6 +36,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
+from .creases import mark_creases
 from .mirror import copy_triangles, mirror_map, symmetrise, twins
 from .patches import SHORTEST, SUPER, area3, charts, patches, taper
 from .rows import unique_pairs
@@ -237,7 +238,8 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     try:
         tri.insert_vertices(np.ascontiguousarray(uv))
         tri.insert_edges(cons)
-        outer = tri.collect_outer_triangles_and_holes()
+        outer = tri.collect_outer_triangles() if patch.creases else \
+            tri.collect_outer_triangles_and_holes()
         if refine:
             piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
             shortest = max(patch.shortest * FINEST / SHORTEST,
@@ -529,8 +531,11 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     a new edge turns by at most ``curvature`` degrees and, with ``lift.both`` (the surface's
     size at the points, :func:`juncture.surface.lift.surface_lift`), stands off it by at most
     ``depth`` times that size (:func:`_bent`): the enclosed volume converges as both shrink.
-    ``lines`` ((n,) bool, the vertices on intersection lines): a network is cut into patches
-    where it turns at a crease between such points (:data:`~juncture.surface.patches.CREASE`).
+    ``lines`` ((n,) bool or int: 1 on intersection lines): a network is cut into patches
+    where it turns at a crease between such points (:data:`~juncture.surface.patches.CREASE`);
+    its edges between two vertices marked :data:`~juncture.surface.creases.CORNER_LINE` (an
+    arbitrary section's corners) that turn are kept
+    (:func:`~juncture.surface.creases.mark_creases`).
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
@@ -613,7 +618,7 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
 
     charted, kept, strips, copied = [], [], [], []
     flat, frozen = (np.zeros(len(mesh.triangles), bool) if m is None else m for m in held)
-    groups = patches(mesh, lines)
+    groups = patches(mesh, None if lines is None else np.asarray(lines) == 1)
     twin = {} if splits.mirror is None else twins(mesh, groups, splits.mirror)
     whole = {}                          # primary: its charts, where it is charted whole
     for i in [i for i in range(len(groups)) if i not in twin] + list(twin):
@@ -649,6 +654,7 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
         for patch in got or ():
             patch.lift = lift
             charted.append(patch)
+    mark_creases(charted, mesh, lines)
     _mark_free(charted, splits)
     _mark_slopes(charted, mesh)
     return charted, kept, strips, copied
