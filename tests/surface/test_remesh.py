@@ -707,7 +707,8 @@ def test_a_point_by_a_seam_is_left_short_by_at_most_the_seams_own_sag(sag_share)
     ends = mesh.vertices[patch.ids[patch.edges]]
     patch.free = np.all(ends[:, :, 0] == 0.0, axis=1)        # the seam: u = 0
     move, d, slope = 0.1, 0.025, 1.0 / rm.TAPER
-    sag = None if sag_share is None else (lambda at: np.full(len(at), sag_share * move))
+    sag = None if sag_share is None else \
+        (lambda edges, row, t: np.full(len(row), sag_share * move))
     mid = patch.uv[patch.edges[patch.free]].mean(axis=(0, 1))
     inward = patch.uv.mean(axis=0) - mid
     scale = np.linalg.norm(patch.uv[patch.edges[0, 1]] - patch.uv[patch.edges[0, 0]]) / \

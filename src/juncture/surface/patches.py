@@ -341,12 +341,13 @@ def taper(patch, query, move, slope, sag=None):
     """(k,) the share of its lift (``move``, (k,)) each chart point takes. Near the patch's
     free boundary edges (``patch.free``: seams whose two sides do not lift alike, straight
     chords of an exact curve) a point is left short of its exact surface by at most the
-    seam's own sag there (``sag``: the lift, (s,), of chart points (s, 2) on those edges;
-    without it, the whole lift) less its distance from the edges times the slope allowed
-    there (``patch.slope`` per boundary edge, else ``slope``): the step from the chord to
-    the exact surface rises no steeper than that, and where the seam lies on its curve a
-    point off it is lifted in full however far its assembled facet stands inside (a body
-    block whose facets span a quarter of its circle). The distance is that to the nearest
+    seam's own sag there (``sag(edges, row, t)``: the lifts, (s,), of the points at
+    fractions ``t`` along the boundary edges ``edges[row]``; without it, the whole lift)
+    less its distance from the edges times the slope allowed there (``patch.slope`` per
+    boundary edge, else ``slope``): the step from the chord to the exact surface rises no
+    steeper than that, and where the seam lies on its curve a point off it is lifted in
+    full however far its assembled facet stands inside (a body block whose facets span a
+    quarter of its circle). The distance is that to the nearest
     of :data:`SAMPLES` points spread along those edges (a k-d tree built once per patch)
     less half their spacing: never more than the true distance, so a point near a seam is
     never lifted further than its share."""
@@ -365,7 +366,7 @@ def taper(patch, query, move, slope, sag=None):
         t = t / np.repeat(count, count + 1)
         at = a[row] + t[:, None] * (b - a)[row]
         steep = np.full(len(edges), slope) if patch.slope is None else patch.slope[free]
-        deep = np.full(len(at), np.inf) if sag is None else _seam_sag(sag, at, row)
+        deep = np.full(len(at), np.inf) if sag is None else _seam_sag(sag(edges, row, t), row)
         patch.near = (cKDTree(at), 0.5 * float((length / count).max()),
                       np.append(steep[row], np.inf), np.append(deep, 0.0))
     tree, half, steep, deep = patch.near
@@ -377,10 +378,11 @@ def taper(patch, query, move, slope, sag=None):
     return np.clip(1.0 - short / np.maximum(move, 1e-300), 0.0, 1.0)
 
 
-def _seam_sag(sag, at, row):
-    """(s,) the lift ``sag`` of the seam samples ``at``, each at least the largest of its
-    edge's (the sag is measured at samples; a point between them may stand further off)."""
-    deep = np.asarray(sag(at), float)
+def _seam_sag(deep, row):
+    """(s,) the lifts ``deep`` of the seam samples, each at least the largest of its edge's
+    (``row``: each sample's edge; the sag is measured at samples, a point between them may
+    stand further off)."""
+    deep = np.asarray(deep, float)
     most = np.zeros(row.max() + 1)
     np.maximum.at(most, row, deep)
     return most[row]

@@ -465,13 +465,26 @@ def _tapered(patch, points, lifted, query):
     (chart points ``query``) by the share :func:`_lifted` describes."""
     move = np.linalg.norm(lifted - points, axis=1)
 
-    def sag(at):
-        on, under = locate(patch.uv, patch.tri, patch.xyz, at, patch.find)
-        lift = patch.lift(on, patch.ids[patch.tri[under]], patch.component, patch.surface)
-        return np.linalg.norm(lift - on, axis=1)
+    def sag(edges, row, t):         # on the straight 3-D edges, from their own triangles
+        a, b = patch.xyz[edges[row, 0]], patch.xyz[edges[row, 1]]
+        on = a + t[:, None] * (b - a)
+        corners = patch.ids[patch.tri[_edge_triangles(patch.tri, edges)[row]]]
+        return np.linalg.norm(patch.lift(on, corners, patch.component, patch.surface) - on,
+                              axis=1)
 
     w = taper(patch, query, move, 1.0 / TAPER, sag)
     return points + w[:, None] * (lifted - points)
+
+
+def _edge_triangles(tri, edges):
+    """(k,) the row of ``tri`` (m, 3) that has each edge (k, 2) (a boundary edge: one)."""
+    n = int(tri.max()) + 1
+    ends = np.sort(np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]]), axis=1)
+    key = ends[:, 0] * n + ends[:, 1]
+    order = np.argsort(key, kind="stable")
+    want = np.sort(edges, axis=1)
+    at = np.searchsorted(key[order], want[:, 0] * n + want[:, 1])
+    return order[np.minimum(at, len(order) - 1)] % len(tri)
 
 
 def _on_surface(patch, vertices, query):
