@@ -134,3 +134,38 @@ def test_the_lens_about_an_edge_narrows_to_its_ends():
         pts, tri, comp = _edge_and_point([0.02, y, -0.6])
         out, _ = split_seams(pts, tri, comp)
         assert len(out) == len(tri) + 1 and (out == 3).sum() == 3
+
+
+def test_a_long_root_edge_takes_only_points_of_its_own_seam(monkeypatch):
+    """A held-out airplane (tests/data/generated/README.md): a wing with four chord stations
+    whose root runs past the fuselage's end; its upper root edge from x = 227.9 to 258.8 (a
+    lens 1.5 ft wide) lies within a thin trailing edge's thickness of the lower seam, and
+    took the fuselage lower block's row ends, nearer to it than to their own edges, as
+    points of its seam, then dropped them as off its path: both seams stayed open (22 open
+    edges, `mesh` refused the airplane). A point now goes to the nearest edge whose other
+    side's boundary runs through it: the assembled surface passes every check (exact
+    predicates). Counterfactual: each point at its nearest edge, open."""
+    import warnings
+
+    import juncture as jc
+    import juncture.surface.seams as sm
+    from juncture.surface.assemble import assemble
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "assembly" / \
+        "wing_root_edge_past_the_fuselage_end_over_a_thin_trailing_edge.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck))
+    surface = assemble(geo)
+    assert not surface.open_loops
+    assert check_mesh(surface.vertices, surface.triangles).failures() == []
+
+    def nearest(found, *args):
+        best = {}
+        for off, v, e, s in sorted(found):
+            best.setdefault(v, (off, e, s))
+        return best
+
+    monkeypatch.setattr(sm, "_nearest_edges", nearest)
+    assert len(assemble(geo).open_loops) == 4

@@ -116,24 +116,26 @@ def split_seams(vertices, triangles, component, lens=LENS):
         touch.setdefault(b, set()).add(int(component[t]))
     ids = np.fromiter(touch, int)
     pts = vertices[ids]
+    links = {}
+    for a, b in edges.tolist():
+        links.setdefault(a, set()).add(b)
+        links.setdefault(b, set()).add(a)
     # Each point goes to the one edge it lies nearest (a point near a thin trailing edge is
-    # in the lens of both the upper and the lower surface's edge).
-    best = {}
+    # in the lens of both the upper and the lower surface's edge), first among the edges
+    # whose other side's boundary runs through it (_chain_points).
+    found = []
     for e, ((a, b), t) in enumerate(zip(edges.tolist(), owner.tolist())):
         mine = int(component[t])
         near, s, off = _between(pts, vertices[a], vertices[b], lens)
         for k in np.flatnonzero(near):
             v = int(ids[k])
-            if (touch[v] - {mine} or off[k] <= COLLINEAR) and off[k] < best.get(v, (np.inf,))[0]:
-                best[v] = (float(off[k]), e, float(s[k]))
+            if touch[v] - {mine} or off[k] <= COLLINEAR:
+                found.append((float(off[k]), v, e, float(s[k])))
+    best = _nearest_edges(found, edges, owner, component, touch, links)
     best = _one_side(best, edges)
     per_edge = {}
     for v, (_, e, t_v) in best.items():
         per_edge.setdefault(e, []).append((t_v, v))
-    links = {}
-    for a, b in edges.tolist():
-        links.setdefault(a, set()).add(b)
-        links.setdefault(b, set()).add(a)
     taken = {v for cand in per_edge.values() for _, v in cand}
     for e, chain in _wide_chains(vertices, edges, owner, component, touch, links,
                                  per_edge, taken):
@@ -160,6 +162,41 @@ def split_seams(vertices, triangles, component, lens=LENS):
     new = [np.asarray(f, dtype=triangles.dtype).reshape(-1, 3) for _, f in replaced]
     parent = np.concatenate([keep] + [np.full(len(f), r[0]) for r, f in replaced])
     return np.concatenate([triangles[keep]] + new), parent
+
+
+def _nearest_edges(found, edges, owner, component, touch, links):
+    """{point: (offset, edge, parameter)}: each point found in edges' lenses (``found``:
+    (offset, point, edge, parameter)) at the nearest edge whose other side's boundary runs
+    from its ends through the point (:func:`_chain_points`), else at the nearest edge. A wing's
+    root edge 31 ft long beside a fuselage's end, whose lens is 1.5 ft wide, took the points
+    of the lower surface's seam a thin trailing edge below it, nearer to it than to their
+    own edges, and dropped them as off its seam: both seams stayed open."""
+    chains, best = {}, {}
+    for off, v, e, s in sorted(found):
+        if v in best:
+            continue
+        if e not in chains:
+            (a, b), t = edges[e].tolist(), int(owner[e])
+            chains[e] = _chain_points(a, b, int(component[t]), touch, links)
+        if v in chains[e]:
+            best[v] = (off, e, s)
+    for off, v, e, s in sorted(found):
+        if v not in best and not any(v in c for c in chains.values()):
+            best[v] = (off, e, s)
+    first = {}
+    for _, v, _, _ in found:                 # in the order the edges first found them
+        first.setdefault(v, len(first))
+    return dict(sorted(best.items(), key=lambda item: first[item[0]]))
+
+
+#: How far :func:`_chain_points` follows the other side's boundary.
+CHAIN_STEPS = 256
+
+
+def _chain_points(a, b, mine, touch, links):
+    """The set of points on the other side's boundary path from ``a`` to ``b``
+    (:func:`_other_chain`, followed up to :data:`CHAIN_STEPS` points)."""
+    return set(_other_chain(a, b, mine, touch, links, CHAIN_STEPS))
 
 
 def _one_side(best, edges):
@@ -205,13 +242,13 @@ def _wide_chains(vertices, edges, owner, component, touch, links, per_edge, take
     return out
 
 
-def _other_chain(a, b, mine, touch, links):
+def _other_chain(a, b, mine, touch, links, steps=WIDE_STEPS):
     """The points of the boundary path from ``a`` to ``b`` (not the edge itself) through
-    points that only other components' boundaries touch, at most :data:`WIDE_STEPS` of
-    them; [] when there is none."""
+    points that only other components' boundaries touch, at most ``steps`` of them; []
+    when there is none."""
     for first in links.get(a, ()):
         path, prev, v = [], a, first
-        while v != b and len(path) < WIDE_STEPS and mine not in touch.get(v, {mine}):
+        while v != b and len(path) < steps and mine not in touch.get(v, {mine}):
             path.append(v)
             step = [w for w in links.get(v, ()) if w != prev]
             if len(step) != 1:
