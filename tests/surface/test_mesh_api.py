@@ -410,37 +410,3 @@ def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing
     assert abs(tm.volume / cells - 1.0) < 0.005
     monkeypatch.setattr(rm, "_away_from", lambda lift, crossings: None)
     assert jc.mesh(geo).volume() / cells - 1.0 < -0.01
-
-
-def test_a_re_triangulation_without_retries_still_mends_a_crossing_locally(monkeypatch):
-    """pipeline._remeshed with retries=0 (the first try, whose seams follow the exact
-    curves where wings meet bodies): where its triangles cross, the triangles near the
-    crossing are re-triangulated held (pipeline._held_near) before it gives up; a held-out
-    airplane's tail crossed itself there and the whole airplane fell back to seams on the
-    chords (seed 3030 draw 22: the curve 6.7e-6 of the size off them). Mocked: the first
-    re-triangulation crosses, the held one does not, and the held one is returned."""
-    import types
-
-    import juncture.surface.check as check
-    import juncture.surface.pipeline as pl
-    import juncture.surface.remesh as rm
-
-    calls = []
-    crossing = types.SimpleNamespace(open_edges=0, misoriented_edges=0, nonmanifold_edges=0,
-                                     intersecting_pairs=1, failures=lambda: ["1 pair"])
-    clean = types.SimpleNamespace(failures=lambda: [])
-    surface = types.SimpleNamespace(open_loops=(), vertices=np.zeros((3, 3)),
-                                    triangles=np.array([[0, 1, 2]]))
-
-    def remesh(mesh, **kwargs):
-        calls.append(kwargs["held"])
-        return types.SimpleNamespace(vertices=f"try {len(calls)}", triangles=None)
-
-    monkeypatch.setattr(rm, "remesh", remesh)
-    monkeypatch.setattr(check, "check_mesh",
-                        lambda v, t: crossing if v == "try 1" else clean)
-    monkeypatch.setattr(pl, "_held_near", lambda s, b, r: (np.array([True]), np.ones((1, 4))))
-    better, report, failures = pl._remeshed(surface, 25.0, None, 1e-4, True, None, None,
-                                            None, retries=0)
-    assert len(calls) == 2 and calls[0] is None and calls[1].tolist() == [True]
-    assert better.vertices == "try 2" and report is clean and failures is None

@@ -285,9 +285,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     where the re-triangulation was kept or the surface is open (returned as it is).
     ``lines``: see :func:`juncture.surface.remesh.remesh`; ``retries``: how many times
     surfaces that crossed keep their triangles and the rest is tried again (default
-    :data:`RETRIES`). The local retries where triangles cross (held, then frozen) come
-    first, with any ``retries``: with none, a tail that crossed itself beside the seams
-    that follow exact curves sent the whole airplane back to seams on the chords."""
+    :data:`RETRIES`)."""
     from ..errors import GeometryError
     from .check import check_mesh
     from .remesh import remesh
@@ -312,7 +310,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
         failures = report.failures()
         if not failures:
             return better, report, None
-        if local and _crossing_only(report):
+        if local and tries and _crossing_only(report):
             # first only where they crossed: re-triangulated unlifted, then kept
             near, found = _held_near(surface, better, report)
             if held is None:
