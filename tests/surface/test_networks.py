@@ -216,5 +216,5 @@ def test_the_mesh_of_an_arbitrary_fuselage_keeps_its_polygon(monkeypatch):
             on = surface.vertices[surface.vertices[:, 0] == station][:, 1:]
             assert len(corner) == 7
             assert np.linalg.norm(both[:, None] - on[None], axis=2).min(axis=1).max() < 1e-9
-        monkeypatch.setattr(rm, "mark_creases", lambda charted, mesh, lines: None)
+        monkeypatch.setattr(rm, "mark_creases", lambda charted, lines: None)
         assert short(jc.mesh(geo)).max() > 1e-3

@@ -51,7 +51,7 @@ def corner_points(geometry, surface):
     return np.concatenate(out) if out else np.zeros(0, np.int64)
 
 
-def mark_creases(charted, mesh, lines):
+def mark_creases(charted, lines):
     """Append to each charted patch's ``edges`` its inner network edges between two
     vertices marked :data:`CORNER_LINE` in ``lines`` where its triangles turn by more than
     :data:`CORNER_CREASE` (both ends kept in the chart), and count them in

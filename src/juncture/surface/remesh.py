@@ -667,7 +667,7 @@ def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
         for patch in got or ():
             patch.lift = lift
             charted.append(patch)
-    mark_creases(charted, mesh, lines)
+    mark_creases(charted, lines)
     _mark_free(charted, splits)
     _mark_slopes(charted, mesh)
     return charted, kept, strips, copied
