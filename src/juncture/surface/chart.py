@@ -26,6 +26,15 @@ def patch_edges(tri):
     return directed, und, uses, inverse
 
 
+def edge_sides(uses, inverse):
+    """(first, second) triangle rows of each unique edge of :func:`patch_edges` (``uses``,
+    ``inverse``); an edge in one triangle has it as both."""
+    order = np.argsort(inverse, kind="stable")          # each edge's rows, in turn
+    start = np.cumsum(uses) - uses
+    owner = np.tile(np.arange(len(inverse) // 3), 3)[order]
+    return owner[start], owner[np.minimum(start + 1, len(owner) - 1)]
+
+
 def _loops(tri):
     from .assemble import boundary_loops
 

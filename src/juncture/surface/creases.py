@@ -64,7 +64,7 @@ def mark_creases(charted, lines):
     if not marked.any():
         return
     from .assemble import boundary_loops
-    from .chart import patch_edges
+    from .chart import edge_sides, patch_edges
 
     limit = np.cos(np.radians(CORNER_CREASE))
     for patch in charted:
@@ -76,10 +76,8 @@ def mark_creases(charted, lines):
                                & patch.kept[und].all(axis=1))
         if not len(inner) or len(boundary_loops(t)) != 1:
             continue
-        order = np.argsort(inverse, kind="stable")
-        start = np.cumsum(uses) - uses
-        owner = np.tile(np.arange(len(t)), 3)[order]
-        a, b = owner[start[inner]], owner[start[inner] + 1]
+        first, second = edge_sides(uses, inverse)
+        a, b = first[inner], second[inner]
         n = patch.normals
         turned = np.einsum("ij,ij->i", n[a], n[b]) < limit
         if turned.any():

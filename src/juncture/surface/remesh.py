@@ -748,14 +748,11 @@ def _mark_slopes(charted, mesh):
     on = [p for p in charted if p.component in getattr(p.lift, "bodies", ())]
     if not on:
         return
-    from .chart import patch_edges
+    from .chart import edge_sides, patch_edges
 
     t = np.asarray(mesh.triangles)
     _, und, uses, inverse = patch_edges(t)
-    order = np.argsort(inverse, kind="stable")          # each edge's rows, in turn
-    start = np.cumsum(uses) - uses
-    owner = np.tile(np.arange(len(t)), 3)[order]
-    a, b = owner[start], owner[np.minimum(start + 1, len(owner) - 1)]
+    a, b = edge_sides(uses, inverse)
     p = mesh.vertices[t]
     normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
