@@ -33,7 +33,7 @@ test: $(STAMP) $(BROWSER)
 	$(BIN)/python -m pytest -q -n auto -m "not slow"
 
 test-all: $(STAMP) $(BROWSER)
-	$(BIN)/python -m pytest -q -n auto
+	HYPOTHESIS_PROFILE=explore $(BIN)/python -m pytest -q -n auto
 
 bench: $(STAMP)
 	$(BIN)/python -m pytest -q benchmarks --benchmark-only

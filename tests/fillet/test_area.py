@@ -4,7 +4,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from matplotlib.path import Path
 
@@ -113,6 +113,10 @@ def test_no_fillet_adds_no_area():
 @settings(max_examples=12, deadline=None)
 @given(z=st.floats(-1.2, 1.2), dihedral=st.floats(-4.0, 6.0), root_y=st.floats(-0.5, 3.0),
        kind=st.sampled_from(["cubic", "circular"]))
+# Found by a random run: the lower fillet's tangents were taken an eighth of the way at a
+# time towards the paper's, and the step flipped as the body shrank by 1e-7 (the added area
+# by 1e-3): keep_area did not converge (ConvergenceError, worst residual 2.8e-6).
+@example(z=0.7667854301416224, dihedral=0.767578125, root_y=1.5827523167188113, kind="cubic")
 def test_keep_area_restores_the_original_area_at_every_station(z, dihedral, root_y, kind):
     cfg = wing_body(z_root=z, dihedral_deg=dihedral, root_y=root_y)
     geo = jc.complete(cfg, kind, keep_area=True)

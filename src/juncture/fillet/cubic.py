@@ -530,6 +530,9 @@ class _Construction:
 
 #: Points along each line where a fillet is checked against the surfaces.
 _SAMPLES = 33
+#: Bisection steps for how far towards the paper's tangents a fillet stays clear
+#: (:func:`_towards_paper`; 2**-24 of an eighth of the way).
+_BISECT = 24
 #: Shares of theta_u the safety net tries first (:func:`_safety_net`).
 _GRID = 8
 
@@ -577,20 +580,36 @@ def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1):
     legs, they are kept if the curve they give stays clear of both surfaces (the transport's
     numbers stay the paper's), else taken as far towards them as it does: the control points
     are linear in w (the guaranteed lengths at w = 0, the paper's at 1), so all candidates
-    w = k / 8 of all such lines are checked at once."""
+    w = k / 8 of all such lines are checked at once, and the first cell that fails is
+    bisected (:data:`_BISECT` steps) for where the curve stops being clear. The fillet then
+    moves continuously with the geometry (a grid value alone jumped by an eighth of the way
+    as the body shrank by 1e-7 under keep_area, and the added area with it: no re-designed
+    body kept the area)."""
     full = con.finish(geo, 1.0)
     c0, c1 = control, full[4]
     grid = np.arange(1, 9) / 8.0
     rows = np.flatnonzero(reach)
-    cand = c0[rows, None] + grid[None, :, None, None] * (c1 - c0)[rows, None]
-    ok = _clear(wing, side, body, cand.reshape(-1, 4, 3), tolerance(body),
-                np.repeat(I[rows], grid.size, axis=0), _SAMPLES).reshape(rows.size, -1)
+    tol, corner = tolerance(body), I[rows]
+
+    def clear(w):                       # (len(rows), k) shares w -> clear?
+        cand = c0[rows, None] + w[..., None, None] * (c1 - c0)[rows, None]
+        k = w.shape[1]
+        return _clear(wing, side, body, cand.reshape(-1, 4, 3), tol,
+                      np.repeat(corner, k, axis=0), _SAMPLES).reshape(rows.size, k)
+
+    ok = clear(np.broadcast_to(grid, (rows.size, grid.size)))
     # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
     upto = np.cumprod(ok, axis=1).sum(axis=1)
-    some = (upto > 0) & (upto < grid.size)
-    part, whole = rows[some], rows[upto == grid.size]
+    lo, hi = upto / 8.0, (upto + 1) / 8.0
+    open_ = upto < grid.size
+    for _ in range(_BISECT if open_.any() else 0):
+        mid = 0.5 * (lo + hi)
+        good = clear(mid[:, None])[:, 0]
+        lo, hi = np.where(open_ & good, mid, lo), np.where(open_ & ~good, mid, hi)
+    w = np.where(open_, lo, 1.0)
     control, T0, T1 = control.copy(), T0.copy(), T1.copy()
-    control[part] = cand[np.flatnonzero(some), upto[some] - 1]
+    part, whole = rows[open_ & (w > 0)], rows[~open_]
+    control[part] = c0[part] + w[open_ & (w > 0), None, None] * (c1 - c0)[part]
     T0[part] = 3.0 * (control[part, 1] - control[part, 0])
     T1[part] = 3.0 * (control[part, 3] - control[part, 2])
     control[whole], T0[whole], T1[whole] = c1[whole], full[2][whole], full[3][whole]
