@@ -396,7 +396,7 @@ def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing
     now lifted but within a crossing's reach, rising from there at 1 / TAPER: the enclosed
     volume is within 0.5 % of the union's cells (tests/union_oracle.py), closed and wound
     consistently (trimesh). Counterfactual: held points left unlifted, over 1 % short."""
-    import juncture.surface.remesh as rm
+    import juncture.surface.patch_roles as patch_roles
 
     deck = DATA / "generated" / "remesh" / \
         "canted_fin_between_a_low_wing_and_the_tail_cone_top.inp"
@@ -408,5 +408,5 @@ def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     assert abs(tm.volume / cells - 1.0) < 0.005
-    monkeypatch.setattr(rm, "_away_from", lambda lift, crossings: None)
+    monkeypatch.setattr(patch_roles, "away_from", lambda lift, crossings: None)
     assert jc.mesh(geo).volume() / cells - 1.0 < -0.01

@@ -36,10 +36,9 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
-from .creases import mark_creases
-from .mirror import copy_triangles, mirror_map, symmetrise, twins
-from .patches import SHORTEST, SUPER, area3, charts, patches, taper
-from .rows import unique_pairs
+from .mirror import copy_triangles, mirror_map, symmetrise
+from .patch_roles import TAPER, sorted_patches
+from .patches import SHORTEST, SUPER, area3, taper
 from .splits import Splits, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
@@ -59,10 +58,6 @@ TURN = 12.0
 BUDGET = 30
 #: A triangle smaller than this share of the input triangle under it is not split again.
 SMALL = 0.05
-#: A new point lifted onto the exact surface moves at most 1 / TAPER of its distance from
-#: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
-#: still cross).
-TAPER = 10.0
 #: Default largest turn [deg] of an exact surface under one new edge, measured by its
 #: midpoint's sag (:func:`_bent`): the inscribed polygon of a circle at this spacing holds
 #: sin(a) / a of its area (0.7 % short at 12 deg, 0.5 % at 10). None: no such limit (the
@@ -557,9 +552,9 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     splits = _splits(mesh, lift)
     size = float(np.ptp(mesh.vertices, axis=0).max())
     tol = None if tolerance is None else tolerance * size
-    charted, kept, strips, copied = _sorted_patches(mesh, keep, lift, splits, min_angle,
-                                                   lines, TINY * size, (held, frozen),
-                                                   crossings)
+    charted, kept, strips, copied = sorted_patches(mesh, keep, lift, splits, min_angle,
+                                                  lines, TINY * size, (held, frozen),
+                                                  crossings)
     shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
@@ -614,155 +609,6 @@ def _splits(mesh, lift):
     e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
     return Splits(vertices, seam_lift(mesh, lift), mirror,
                   set(zip(e[:, 0].tolist(), e[:, 1].tolist())))
-
-
-def _sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
-                    held=(None, None), crossings=None):
-    """(charted patches, kept triangle rows, strips, copies): a thin cap is a strip
-    (:mod:`juncture.surface.strips`, its sides split in ``splits`` now for triangles of
-    about ``min_angle``); a patch in ``keep``
-    or one that cannot be charted keeps its triangles, as does one no larger than ``tiny``
-    (the cap of a section a rounding's size across); a patch with rows in ``held`` (two
-    masks or None: re-triangulated unlifted, kept) is charted in pieces, those of the first
-    not lifted, those of the second kept; the mirror image of a patch charted
-    whole (:func:`juncture.surface.mirror.twins`) is (its rows, that patch's charts), and
-    takes their triangles mirrored at the end."""
-    from .strips import presplit, strip, tip_and_strip
-
-    charted, kept, strips, copied = [], [], [], []
-    flat, frozen = (np.zeros(len(mesh.triangles), bool) if m is None else m for m in held)
-    groups = patches(mesh, None if lines is None else np.asarray(lines) == 1)
-    twin = {} if splits.mirror is None else twins(mesh, groups, splits.mirror)
-    whole = {}                          # primary: its charts, where it is charted whole
-    for i in [i for i in range(len(groups)) if i not in twin] + list(twin):
-        rows = groups[i]
-        if flat[rows].any() or frozen[rows].any():
-            if frozen[rows].any():
-                kept.append(rows[frozen[rows]])
-            charted += _pieces(mesh, rows[flat[rows] & ~frozen[rows]], kept,
-                               _away_from(lift, crossings))
-            charted += _pieces(mesh, rows[~flat[rows] & ~frozen[rows]], kept, lift)
-            continue
-        if whole.get(twin.get(i)):
-            copied.append((rows, whole[twin[i]]))
-            continue
-        hold = mesh.surface[rows[0]] in keep or _extent(mesh, rows) <= tiny
-        thin = None if hold else strip(mesh, rows)
-        if thin is not None:
-            strips.append(thin)
-            presplit(thin, mesh.vertices, splits, min_angle)
-            continue
-        parts = None if hold else tip_and_strip(mesh, rows)
-        if parts is not None:           # the strip zipped, the tip charted
-            rows, thin = parts
-            strips.append(thin)
-            presplit(thin, mesh.vertices, splits, min_angle)
-        pieces = []
-        got = None if hold else charts(mesh, rows, kept=pieces)
-        kept.extend(pieces)
-        if got is None:
-            kept.append(rows)
-        elif parts is None and not pieces:
-            whole[i] = got
-        for patch in got or ():
-            patch.lift = lift
-            charted.append(patch)
-    mark_creases(charted, lines)
-    _mark_free(charted, splits)
-    _mark_slopes(charted, mesh)
-    return charted, kept, strips, copied
-
-
-def _away_from(lift, crossings):
-    """``lift`` for held triangles: None (new points stay on them) without ``crossings``;
-    with them ((k, 4): centres and radii of where re-triangulated surfaces crossed), a point
-    within a radius of a centre is not lifted and one further away is lifted by at most
-    its distance beyond that over :data:`TAPER` (a held facet may span a quarter of a body's
-    circle and ten feet along it: its far parts, left on it, stood a tenth of the radius
-    inside)."""
-    if lift is None or crossings is None or not len(crossings):
-        return None
-    from scipy.spatial import cKDTree
-
-    tree, radius = cKDTree(crossings[:, :3]), np.append(crossings[:, 3], np.inf)
-
-    def held_lift(points, corners, component, surface):
-        full = lift(points, corners, component, surface)
-        move = np.linalg.norm(full - points, axis=1)
-        dist, near = tree.query(points)
-        room = np.maximum(dist - radius[near], 0.0) / TAPER
-        w = np.clip(room / np.maximum(move, 1e-300), 0.0, 1.0)
-        return points + w[:, None] * (full - points)
-
-    return held_lift
-
-
-def _pieces(mesh, rows, kept, lift):
-    """The charts of the connected pieces of the triangle ``rows`` (what a patch leaves
-    around its held triangles); a piece that does not chart is appended to ``kept``."""
-    from .patches import _connected
-
-    out = []
-    for part in _connected(mesh, rows) if len(rows) else ():
-        pieces = []
-        got = charts(mesh, part, kept=pieces)
-        kept.extend(pieces)
-        if got is None:
-            kept.append(part)
-        for patch in got or ():
-            patch.lift = lift
-            out.append(patch)
-    return out
-
-
-def _extent(mesh, rows):
-    """The largest extent along x, y or z of the triangle ``rows``."""
-    return float(np.ptp(mesh.vertices[mesh.triangles[rows].ravel()], axis=0).max())
-
-
-def _mark_free(charted, splits):
-    """``patch.free`` of every charted patch: its boundary edges whose two sides do not
-    lift alike (``splits.move.agree``, asked once per seam edge, which two patches share)."""
-    if not charted:
-        return
-    ends = [np.sort(p.ids[p.edges], axis=1) for p in charted]
-    if splits.move is None:
-        free = np.ones(sum(map(len, ends)), bool)
-    else:
-        seams, inverse = unique_pairs(np.concatenate(ends), return_inverse=True)
-        free = ~splits.move.agree(seams[:, 0], seams[:, 1])[inverse]
-    for patch, part in zip(charted, np.split(free, np.cumsum(list(map(len, ends)))[:-1])):
-        patch.free = part
-
-
-def _mark_slopes(charted, mesh):
-    """``patch.slope`` of every charted patch on a circular body (``patch.lift.bodies``; a
-    wing's thin sections crossed each other so): per boundary edge, tan of a quarter of the
-    wedge of air between the patch's assembled triangle on it and the other surface's
-    (:func:`juncture.surface.patches.taper`), at least 1 / :data:`TAPER`. Two surfaces
-    lifted towards each other from a seam then each take at most half of the wedge between
-    them: a canard meeting the fuselage at 90 deg lets the fuselage's points rise onto its
-    circle within 2.4 times the lift of the seam, where 1 / TAPER kept points 10 times their
-    lift away from it short of it (by a tenth of the radius where a block's facets span a
-    quarter of its circle)."""
-    on = [p for p in charted if p.component in getattr(p.lift, "bodies", ())]
-    if not on:
-        return
-    from .chart import edge_sides, patch_edges
-
-    t = np.asarray(mesh.triangles)
-    _, und, uses, inverse = patch_edges(t)
-    a, b = edge_sides(uses, inverse)
-    p = mesh.vertices[t]
-    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
-    cos = np.clip(np.einsum("ij,ij->i", normal[a], normal[b]), -1.0, 1.0)
-    steep = np.where(uses == 2, np.clip(np.tan((np.pi - np.arccos(cos)) / 4.0),
-                                        1.0 / TAPER, 1e3), 1.0 / TAPER)
-    for patch in on:            # its boundary edges among the mesh's (all of them there)
-        ends = np.sort(patch.ids[patch.edges], axis=1)
-        _, at = unique_pairs(np.concatenate([und, ends]), return_inverse=True)
-        patch.slope = steep[at[len(und):]]
 
 
 def _area(patch, vertices, edge_length):
