@@ -259,7 +259,7 @@ def test_a_pointed_circular_tail_is_one_point():
 
 @pytest.mark.slow
 def test_curvature_and_depth_bring_the_transport_within_half_a_percent():
-    """Sizing by the exact surfaces (remesh._bent): edges turning by at most 10 deg of a
+    """Sizing by the exact surfaces (deviation.bent): edges turning by at most 10 deg of a
     curved surface and cutting into it by at most 3e-3 of its size bring the enclosed volume
     from 0.67 % to under 0.5 % short of the model's, still closed and valid."""
     import trimesh

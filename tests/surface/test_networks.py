@@ -188,7 +188,7 @@ def test_the_mesh_of_an_arbitrary_fuselage_keeps_its_polygon(monkeypatch):
     (more than 0.1 % of the section)."""
     import warnings
 
-    import juncture.surface.remesh as rm
+    import juncture.surface.patch_roles as patch_roles
     from tests.support import section_area
 
     with warnings.catch_warnings():
@@ -216,5 +216,5 @@ def test_the_mesh_of_an_arbitrary_fuselage_keeps_its_polygon(monkeypatch):
             on = surface.vertices[surface.vertices[:, 0] == station][:, 1:]
             assert len(corner) == 7
             assert np.linalg.norm(both[:, None] - on[None], axis=2).min(axis=1).max() < 1e-9
-        monkeypatch.setattr(rm, "mark_creases", lambda charted, lines: None)
+        monkeypatch.setattr(patch_roles, "mark_creases", lambda charted, lines: None)
         assert short(jc.mesh(geo)).max() > 1e-3

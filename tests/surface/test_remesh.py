@@ -254,10 +254,11 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monk
     """A generated airplane with a cubic fillet and keep_area (tests/data/generated/README.md)
     where two re-triangulated surfaces made the same triangle at a narrow corner, an edge
     across each patch between two of its boundary points: such edges are now split
-    (remesh.CHORD, and since 2026-11-27 remesh._split_shared_chords too) and the first
+    (deviation.CHORD, and since 2026-11-27 remesh._split_shared_chords too) and the first
     re-triangulation passes every check. Without either split, the surfaces that make the
     triangle are kept as assembled, and the airplane passes. (The fuselage's network is
     made at its own stations, as when this airplane was found: networks.SAG off.)"""
+    import juncture.surface.deviation as deviation
     import juncture.surface.networks as nw
     import juncture.surface.remesh as rm
 
@@ -266,7 +267,7 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monk
                fillet="cubic", keep_area=True)
     assembled = assemble(geo)
     assert check_mesh(*_arrays(remesh(assembled))).ok
-    monkeypatch.setattr(rm, "CHORD", np.inf)
+    monkeypatch.setattr(deviation, "CHORD", np.inf)
     monkeypatch.setattr(rm, "_split_shared_chords", lambda *args: None)
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).nonmanifold_edges > 0

@@ -31,14 +31,12 @@ closed, by construction.
 
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
-from .chart import locate
+from .deviation import Shape, chords, deviating, on_surface
 from .mirror import copy_triangles, mirror_map, symmetrise
-from .patch_roles import TAPER, sorted_patches
-from .patches import SHORTEST, SUPER, area3, taper
+from .patch_roles import TAPER, sorted_patches  # noqa: F401  (TAPER: remesh.TAPER)
+from .patches import SHORTEST, SUPER
 from .splits import Splits, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
@@ -56,20 +54,18 @@ TURN = 12.0
 #: Points refinement may add to a chart in all, per point it had and per split point on its
 #: edges (:func:`_budget`; a thin trailing edge's wedge would take points without end).
 BUDGET = 30
-#: A triangle smaller than this share of the input triangle under it is not split again.
-SMALL = 0.05
 #: Default largest turn [deg] of an exact surface under one new edge, measured by its
-#: midpoint's sag (:func:`_bent`): the inscribed polygon of a circle at this spacing holds
-#: sin(a) / a of its area (0.7 % short at 12 deg, 0.5 % at 10). None: no such limit (the
-#: networks' own spacing and ``tolerance`` decide; 10 deg takes the transport from 0.67 %
-#: to 0.60 % short of its model's volume at twice the triangles).
+#: midpoint's sag (:func:`~juncture.surface.deviation.bent`): the inscribed polygon of a
+#: circle at this spacing holds sin(a) / a of its area (0.7 % short at 12 deg, 0.5 % at
+#: 10). None: no such limit (the networks' own spacing and ``tolerance`` decide; 10 deg
+#: takes the transport from 0.67 % to 0.60 % short of its model's volume at twice the
+#: triangles).
 CURVATURE = None
 #: Default largest sag of a new edge, share of the size of the exact surface under it
-#: (:func:`_bent`; a wing's PCHIP section between its ordinates): the enclosed volume is
-#: short by about twice this share. None: no such limit (it costs many triangles).
+#: (:func:`~juncture.surface.deviation.bent`; a wing's PCHIP section between its
+#: ordinates): the enclosed volume is short by about twice this share. None: no such
+#: limit (it costs many triangles).
 DEPTH = None
-#: A sag below this share of the patch's size is not split for curvature (a nose's tip).
-FLOOR = 1e-6
 #: Refinement makes no edge shorter than a chart's SHORTEST share of its median edge, or
 #: PIECE times its shortest boundary piece (a seam split to a thin strip's spacing) where
 #: that is shorter, down to FINEST times its median edge (a wing given by two sections has
@@ -85,15 +81,6 @@ TINY = 1e-5
 #: A triangle with a 3-D angle under this [deg] loses the vertex opposite
 #: its longest edge where refinement put it there (:func:`_drop_flat_apexes`).
 FLAT3D = 6.0
-#: An edge between two boundary points across a patch whose middle stands off the patch by
-#: more than this share of its length goes through the body (:func:`_chords`).
-CHORD = 0.1
-
-
-class _Shape(NamedTuple):
-    turn: float          # cosine of the largest turn of the input triangles under one new
-    curvature: float | None   # largest turn of an exact surface under one new edge [rad]
-    depth: float | None       # largest sag of a new edge, share of the exact surface's size
 
 
 def _inputs(patch, splits):
@@ -259,7 +246,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     inner = np.setdiff1d(np.arange(n, len(pts)), np.fromiter(on_edge, int, len(on_edge)))
     gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     if len(inner):
-        gid[inner] = splits.add_vertex(_on_surface(patch, vertices, pts[inner])[0])
+        gid[inner] = splits.add_vertex(on_surface(patch, vertices, pts[inner])[0])
         patch.extra_uv.append(pts[inner])
         patch.extra_id.append(gid[inner])
     if on_edge:
@@ -271,13 +258,13 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     worst = _drop_flat_apexes(patch, splits, gid, local) if drop and not refine else None
     if worst is not None:
         return worst         # no seam points are added now: triangulate again at once
-    far = _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
+    far = deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
     if tol is not False:
-        far = np.concatenate([far, _chords(patch, splits, vertices, pts, gid, local,
+        far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
     if len(far):
         patch.extra_uv.append(far)
-        patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, far)[0]))
+        patch.extra_id.append(splits.add_vertex(on_surface(patch, vertices, far)[0]))
         return False
     patch.out, patch.pts, patch.local = gid[local], pts, local
     return True
@@ -309,64 +296,6 @@ def _drop_flat_apexes(patch, splits, gid, local):
     return float(angles.min())
 
 
-def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
-    """Chart centroids of the triangles that cut across the patch's surface: the centroid
-    of the flat triangle more than ``tol`` off the surface, the patch triangles under
-    its corners and centroid turning by more than ``shape.turn`` (cosine), or, on an exact
-    surface, an edge cutting it too deep (:func:`_bent`); with ``tol`` None only
-    the triangles with every corner on the boundary that leave the surface (at a narrow
-    corner between two seams, the patch across them would make the same triangle); with
-    ``tol`` False none."""
-    if tol is False or not len(local):
-        return np.zeros((0, 2))
-    centre = pts[local].mean(axis=1)
-    on, under = locate(patch.uv, patch.tri, vertices[patch.ids], centre, patch.find)
-    flat = splits.all()[gid[local]].mean(axis=1)
-    dev = np.linalg.norm(on - flat, axis=1)
-    across = boundary[local, 0].all(axis=1) & (dev > 1e-9 * patch.size)
-    if tol is None:
-        return centre[across]
-    if patch.lift is not None:  # off the exact surface, where there is one, as a new
-        # point there would be put: near a free boundary piece (a straight seam edge, not
-        # lifted) only part of the way (:func:`_lifted`), so splitting there ends
-        dev = np.linalg.norm(_lifted(patch, on, under, centre) - flat, axis=1)
-        inner = ~boundary[local, 1].any(axis=1)
-        bent = inner & _bent(patch, splits, vertices, pts, gid, local, shape)
-    else:
-        bent = np.zeros(len(local), bool)
-    corners = pts[local] + 1e-3 * (centre[:, None] - pts[local])     # inside, not on
-    nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids],
-                              corners.reshape(-1, 2), patch.find)[1]].reshape(-1, 3, 3)
-    turns = (np.einsum("ij,ikj->ik", patch.normals[under], nk) < shape.turn).any(axis=1)
-    # a triangle far smaller than the input triangle under it is not split again (at a
-    # crease, where every triangle astride it turns, splitting would not end)
-    small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
-    return centre[((dev > tol) | turns) & ~small | across | bent]
-
-
-def _chords(patch, splits, vertices, pts, gid, local, boundary):
-    """Chart midpoints of the edges that join two boundary points across the patch (not
-    along a boundary piece) and leave its surface: in 3-D such a chord can cut through the
-    body, e.g. from the top to the bottom of a half-fuselage near its nose, where the image
-    half makes the same edge (four triangles on it). Off the surface means its midpoint
-    more than :data:`CHORD` times the edge from the patch at the chart midpoint (a chord
-    across a corner of a curved patch stands off by far less)."""
-    ends = np.concatenate([local[:, [0, 1]], local[:, [1, 2]], local[:, [2, 0]]])
-    ends = np.sort(ends[boundary[ends, 0].all(axis=1)], axis=1)
-    key, uses = np.unique(ends[:, 0] * len(pts) + ends[:, 1], return_counts=True)
-    key = key[uses == 2]          # inside the patch (a boundary piece has one triangle)
-    if not len(key):
-        return np.zeros((0, 2))
-    ends = np.stack([key // len(pts), key % len(pts)], axis=1)
-    mid = pts[ends].mean(axis=1)
-    on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
-    if patch.lift is not None:
-        on = _lifted(patch, on, under, mid)
-    xyz = splits.all()[gid[ends]]
-    off = np.linalg.norm(on - xyz.mean(axis=1), axis=1)
-    return mid[off > CHORD * np.linalg.norm(xyz[:, 1] - xyz[:, 0], axis=1)]
-
-
 def _split_shared_chords(charted, splits, vertices):
     """Split the edges that two patches both make inside themselves (each edge of the
     triangulations in more than two triangles): its chart midpoint joins each such patch
@@ -396,97 +325,8 @@ def _split_shared_chords(charted, splits, vertices):
         order = np.argsort(key, kind="stable")
         mid = patch.pts[ends[order[np.searchsorted(key[order], inside)]]].mean(axis=1)
         patch.extra_uv.append(mid)
-        patch.extra_id.append(splits.add_vertex(_on_surface(patch, vertices, mid)[0]))
+        patch.extra_id.append(splits.add_vertex(on_surface(patch, vertices, mid)[0]))
         patch.seen = -1
-
-
-def _bent(patch, splits, vertices, pts, gid, local, shape):
-    """(k,) bool: triangles with an edge that cuts the exact surface too deep. A chord of
-    length h on a curve of radius r stands s = h^2 / (8 r) off it at its middle and turns
-    by 8 s / h: an edge is too deep where that turn exceeds ``shape.curvature`` (radians),
-    or where s exceeds ``shape.depth`` times the size of the surface there (``lift.both``: a
-    body's radius, a wing section's largest thickness; the share of the volume the chords
-    cut off grows as s over that size). Sags below :data:`FLOOR` of the patch's size do not
-    count (a nose's tip)."""
-    both = getattr(patch.lift, "both", None)
-    ends = splits.all()[gid[local]]
-    if shape.curvature is None and shape.depth is None:
-        return np.zeros(len(local), bool)
-    angle, depth = shape.curvature, shape.depth
-    # the three edges of every triangle at once, edge k of all triangles after edge k - 1
-    nxt = np.roll(np.arange(3), -1)
-    a = ends.transpose(1, 0, 2).reshape(-1, 3)
-    b = ends[:, nxt].transpose(1, 0, 2).reshape(-1, 3)
-    mid = 0.5 * (pts[local.T.ravel()] + pts[local[:, nxt].T.ravel()])
-    on, under = locate(patch.uv, patch.tri, vertices[patch.ids], mid, patch.find)
-    corners = patch.ids[patch.tri[under]]
-    if both is None or depth is None:     # the surface's size only where depth asks for it
-        lifted, size = patch.lift(on, corners, patch.component, patch.surface), np.inf
-    else:
-        lifted, size = both(on, corners, patch.component, patch.surface)
-    # measured against where a new point there would go: near a free seam only part of the
-    # way (_lifted), or the gap between the ends, held there, and the full lift never shrank
-    # (a wing root's trailing edge next to its strip was split down to 1e-6 ft)
-    lifted = _tapered(patch, on, lifted, mid)
-    sag = np.linalg.norm(lifted - 0.5 * (a + b), axis=1)
-    h = np.linalg.norm(b - a, axis=1)
-    size = np.broadcast_to(size, h.shape)
-    turn = np.inf if angle is None else angle / 8.0 * h
-    most = np.inf if depth is None else depth * size
-    out = ((sag > turn) | (sag > most)) & (sag > FLOOR * patch.size)
-    return out.reshape(3, -1).any(axis=0)
-
-
-
-def _lifted(patch, points, under, query=None):
-    """Points on the patch's chart triangles ``under``, lifted onto the exact surface; with
-    the chart points ``query``, a point nearer the patch's free boundary (a seam whose two
-    sides do not lift alike) than :data:`TAPER` times its lift is lifted that share of the
-    way only. Such seams are straight chords of the exact intersection lines: a point next
-    to one lifted in full stands out of the chord by the sag, and where the surfaces meet at
-    a small angle (a low wing's upper surface and the fuselage side) it went through the
-    other surface. A seam that both sides lift alike (a split within one body) or that lies
-    on both (a wing's leading edge) tapers nothing: on a body whose stations are far apart,
-    whose networks cut its circle by a tenth of its radius, new points near them were left
-    that far inside."""
-    lifted = patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
-    if query is None or not len(points):
-        return lifted
-    return _tapered(patch, points, lifted, query)
-
-
-def _tapered(patch, points, lifted, query):
-    """``points`` moved towards ``lifted`` in full, or near the patch's free boundary
-    (chart points ``query``) by the share :func:`_lifted` describes."""
-    move = np.linalg.norm(lifted - points, axis=1)
-
-    def sag(edges, row, t):         # on the straight 3-D edges, from their own triangles
-        a, b = patch.xyz[edges[row, 0]], patch.xyz[edges[row, 1]]
-        on = a + t[:, None] * (b - a)
-        corners = patch.ids[patch.tri[_edge_triangles(patch.tri, edges)[row]]]
-        return np.linalg.norm(patch.lift(on, corners, patch.component, patch.surface) - on,
-                              axis=1)
-
-    w = taper(patch, query, move, 1.0 / TAPER, sag)
-    return points + w[:, None] * (lifted - points)
-
-
-def _edge_triangles(tri, edges):
-    """(k,) the row of ``tri`` (m, 3) that has each edge (k, 2) (a boundary edge: one)."""
-    n = int(tri.max()) + 1
-    ends = np.sort(np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]]), axis=1)
-    key = ends[:, 0] * n + ends[:, 1]
-    order = np.argsort(key, kind="stable")
-    want = np.sort(edges, axis=1)
-    at = np.searchsorted(key[order], want[:, 0] * n + want[:, 1])
-    return order[np.minimum(at, len(order) - 1)] % len(tri)
-
-
-def _on_surface(patch, vertices, query):
-    """(3-D points, chart triangles under them) of chart points: on the assembled triangles,
-    lifted onto the exact surface where the patch has one."""
-    xyz, under = locate(patch.uv, patch.tri, vertices[patch.ids], query, patch.find)
-    return (xyz if patch.lift is None else _lifted(patch, xyz, under, query)), under
 
 
 def _edge_points(tri, n, cons, parent, uv, pts):
@@ -538,7 +378,8 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     same place (a split within one body), never on an intersection line. On an exact surface
     a new edge turns by at most ``curvature`` degrees and, with ``lift.both`` (the surface's
     size at the points, :func:`juncture.surface.lift.surface_lift`), stands off it by at most
-    ``depth`` times that size (:func:`_bent`): the enclosed volume converges as both shrink.
+    ``depth`` times that size (:func:`~juncture.surface.deviation.bent`): the enclosed
+    volume converges as both shrink.
     ``lines`` ((n,) bool or int: 1 on intersection lines): a network is cut into patches
     where it turns at a crease between such points (:data:`~juncture.surface.patches.CREASE`);
     its edges between two vertices marked :data:`~juncture.surface.creases.CORNER_LINE` (an
@@ -555,7 +396,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     charted, kept, strips, copied = sorted_patches(mesh, keep, lift, splits, min_angle,
                                                   lines, TINY * size, (held, frozen),
                                                   crossings)
-    shape = _Shape(np.cos(np.radians(turn)), None if curvature is None else
+    shape = Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
         # refine and split for shape; then only points inside (no seam points), the last
