@@ -30,10 +30,10 @@ $(BROWSER):
 
 # The tests run on every core (pytest-xdist); the benchmarks alone, one at a time.
 test: $(STAMP) $(BROWSER)
-	$(BIN)/python -m pytest -q -n auto -m "not slow"
+	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "not slow"
 
 test-all: $(STAMP) $(BROWSER)
-	HYPOTHESIS_PROFILE=explore $(BIN)/python -m pytest -q -n auto
+	HYPOTHESIS_PROFILE=explore $(BIN)/python -m pytest -q -n auto --dist worksteal
 
 bench: $(STAMP)
 	$(BIN)/python -m pytest -q benchmarks --benchmark-only

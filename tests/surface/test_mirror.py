@@ -70,6 +70,7 @@ def test_the_transport_s_halves_are_mirror_images_triangle_for_triangle():
         assert theirs == mine, name
 
 
+@pytest.mark.slow  # the transport re-triangulated twice (~10 s): make test-all
 def test_copying_the_image_halves_the_triangulations(monkeypatch):
     """The charts triangulated with both halves matched are about half of those without
     (only the y > 0 side's and those that straddle the plane), counted by the calls to
@@ -107,14 +108,14 @@ def _dented(surface, vertex, depth, both):
     return v
 
 
-@settings(max_examples=3, deadline=None)
+@settings(max_examples=1, deadline=None)
 @given(st.integers(0, 2**31), st.booleans(), st.floats(0.02, 0.05))
 def test_the_mirrored_search_finds_every_crossing_pair(seed, both, depth):
     """Hypothesis: a wing-body meshed with both halves matched; a vertex of the wing's upper
     surface where it is thickest (on the y < 0 side alone, or on the y > 0 side with its
     mirror image) pushed down through the lower one. The crossing pairs the search on the
     y >= 0 side finds, with their images, are those the search of every pair finds
-    (check.MIRROR_SHARE < 0 searches every pair), and there are some. (3 draws here, 40 in
+    (check.MIRROR_SHARE < 0 searches every pair), and there are some. (1 draw here, 40 in
     the slow profile.)"""
     _assert_mirrored_search_finds_every_pair(seed, both, depth)
 

@@ -196,25 +196,41 @@ def _ray_to_plane(origin, direction, normal, on_plane, scale):
 
 
 def _clear(wing, side, body, control, tol, corner, n=17):
-    """Lines (m,) whose cubic stays out of the body and the wing: sampled densely (also in
-    projection on x = x_I, against the body circle and the straight wing line from E back to
-    the ``corner`` I), and at its start, where it leaves the body tangentially, by the
-    second derivative of the radial gap, e''(0) = |T_B|^2 / r + 6 N_B . (P2 - B) >= 0 (N_B
-    the body's normal with the cone's slope, unnormalised)."""
+    """Lines (m,) whose cubic stays out of the body and the wing (both :func:`_margins`
+    >= 0)."""
+    inner, ends = _margins(wing, side, body, control, tol, corner, n)
+    return np.minimum(inner, ends) >= 0.0
+
+
+def _margins(wing, side, body, control, tol, corner, n=17):
+    """((m,), (m,)) how far each line's cubic stays out of the body and the wing between its
+    ends and at them, >= 0 where it does (NaN where a sample cannot be placed: not clear):
+    sampled densely (also in projection on x = x_I, against the body circle and the
+    straight wing line from E back to the ``corner`` I), each sample's depth inside either
+    less ``tol``; between the ends also at its start, where it leaves the body
+    tangentially, by the second derivative of the radial gap, e''(0) = |T_B|^2 / r +
+    6 N_B . (P2 - B) >= 0 (N_B the body's normal with the cone's slope, unnormalised), over
+    its scale. Each term is continuous in the control points, so the least is too: where it
+    changes sign the curve starts to enter a surface. The ends lie on the surfaces by
+    construction (their margin is about ``tol`` whatever the curve does between them)."""
     p = bezier(control, np.linspace(0.0, 1.0, n))
-    out_body = body.distance(p.reshape(-1, 3)).reshape(p.shape[:2]) >= -tol
-    out_wing = wing_depth(wing, p) <= tol
+    out_body = body.distance(p.reshape(-1, 3)).reshape(p.shape[:2]) + tol
+    out_wing = tol - wing_depth(wing, p)
     B = control[:, 0]
-    flat = body.plane_gap(p, B[:, 0])
+    flat = body.plane_gap(p, B[:, 0]) + tol
     line = control[:, 3, 1:] - corner[:, 1:]
     normal = np.stack([-line[:, 1], line[:, 0]], axis=1)
     normal *= np.where((normal * (B[:, 1:] - corner[:, 1:])).sum(1) < 0, -1.0, 1.0)[:, None]
     normal /= np.maximum(np.linalg.norm(normal, axis=1), 1e-300)[:, None]
-    above = ((p[..., 1:] - corner[:, None, 1:]) * normal[:, None]).sum(-1)
-    sampled = np.all(out_body & out_wing & (flat >= -tol) & (above >= -tol)
-                     | ~np.isfinite(p).all(-1), axis=1)
+    above = ((p[..., 1:] - corner[:, None, 1:]) * normal[:, None]).sum(-1) + tol
+    least = np.minimum(np.minimum(out_body, out_wing), np.minimum(flat, above))
+    least = np.where(np.isfinite(p).all(-1), least, np.inf)
     bend, scale = body.bend(control)
-    return sampled & ~(bend < -1e-12 * scale)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        start = bend / scale + 1e-12
+    inner = np.minimum(least[:, 1:-1].min(axis=1, initial=np.inf),
+                       np.where(np.isnan(start), np.inf, start))
+    return inner, np.minimum(least[:, 0], least[:, -1])
 
 
 def _leg_share(along, rate, leg):
@@ -530,9 +546,11 @@ class _Construction:
 
 #: Points along each line where a fillet is checked against the surfaces.
 _SAMPLES = 33
-#: Bisection steps for how far towards the paper's tangents a fillet stays clear
-#: (:func:`_towards_paper`; 2**-24 of an eighth of the way).
-_BISECT = 24
+#: Illinois steps for how far towards the paper's tangents a fillet stays clear
+#: (:func:`_towards_paper`).
+_ROOT_STEPS = 12
+#: A bracket this narrow (a share of the way) is narrow enough (:func:`_first_root`).
+_ROOT_WIDTH = 1e-9
 #: Shares of theta_u the safety net tries first (:func:`_safety_net`).
 _GRID = 8
 
@@ -580,40 +598,74 @@ def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1):
     legs, they are kept if the curve they give stays clear of both surfaces (the transport's
     numbers stay the paper's), else taken as far towards them as it does: the control points
     are linear in w (the guaranteed lengths at w = 0, the paper's at 1), so all candidates
-    w = k / 8 of all such lines are checked at once, and the first cell that fails is
-    bisected (:data:`_BISECT` steps) for where the curve stops being clear. The fillet then
-    moves continuously with the geometry (a grid value alone jumped by an eighth of the way
-    as the body shrank by 1e-7 under keep_area, and the added area with it: no re-designed
-    body kept the area)."""
+    w = k / 8 of all such lines are checked at once, and in the first cell that fails the
+    root of the clearance margin (:func:`_margins`) is found by regula falsi
+    (:data:`_ROOT_STEPS` Illinois steps). The fillet then moves continuously with the
+    geometry (a grid value alone jumped by an eighth of the way as the body shrank by 1e-7
+    under keep_area, and the added area with it: no re-designed body kept the area)."""
     full = con.finish(geo, 1.0)
     c0, c1 = control, full[4]
-    grid = np.arange(1, 9) / 8.0
+    grid = np.arange(9) / 8.0
     rows = np.flatnonzero(reach)
-    tol, corner = tolerance(body), I[rows]
+    tol = tolerance(body)
 
-    def clear(w):                       # (len(rows), k) shares w -> clear?
-        cand = c0[rows, None] + w[..., None, None] * (c1 - c0)[rows, None]
+    def margins(at, w):                 # rows ``at`` of ``rows``, shares w (len(at), k)
+        r = rows[at]
+        cand = c0[r, None] + w[..., None, None] * (c1 - c0)[r, None]
         k = w.shape[1]
-        return _clear(wing, side, body, cand.reshape(-1, 4, 3), tol,
-                      np.repeat(corner, k, axis=0), _SAMPLES).reshape(rows.size, k)
+        got = _margins(wing, side, body, cand.reshape(-1, 4, 3), tol,
+                       np.repeat(I[r], k, axis=0), _SAMPLES)
+        return tuple(m.reshape(len(r), k) for m in got)
 
-    ok = clear(np.broadcast_to(grid, (rows.size, grid.size)))
+    inner, ends = margins(np.arange(rows.size), np.broadcast_to(grid, (rows.size, grid.size)))
     # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
-    upto = np.cumprod(ok, axis=1).sum(axis=1)
-    lo, hi = upto / 8.0, (upto + 1) / 8.0
-    open_ = upto < grid.size
-    for _ in range(_BISECT if open_.any() else 0):
-        mid = 0.5 * (lo + hi)
-        good = clear(mid[:, None])[:, 0]
-        lo, hi = np.where(open_ & good, mid, lo), np.where(open_ & ~good, mid, hi)
-    w = np.where(open_, lo, 1.0)
+    upto = np.cumprod(np.minimum(inner, ends)[:, 1:] >= 0.0, axis=1).sum(axis=1)
+    at = np.minimum(upto, 7)
+    # The ends do not move with w: where they are not clear, no candidate is and the
+    # guaranteed lengths are kept (w = 0), as where the curve at the cell's start is not.
+    w = np.where(upto == 8, 1.0, 0.0)
+    open_ = np.flatnonzero((upto < 8) & (ends[:, 0] >= 0.0)
+                           & (inner[np.arange(rows.size), at] >= 0.0))
+    if open_.size:
+        w[open_] = _first_root(lambda k, x: margins(open_[k], x[:, None])[0][:, 0],
+                               upto[open_] / 8.0, (upto[open_] + 1) / 8.0,
+                               inner[open_, upto[open_]], inner[open_, upto[open_] + 1])
     control, T0, T1 = control.copy(), T0.copy(), T1.copy()
-    part, whole = rows[open_ & (w > 0)], rows[~open_]
-    control[part] = c0[part] + w[open_ & (w > 0), None, None] * (c1 - c0)[part]
+    part, whole = rows[w < 1.0], rows[w == 1.0]
+    control[part] = c0[part] + w[w < 1.0, None, None] * (c1 - c0)[part]
     T0[part] = 3.0 * (control[part, 1] - control[part, 0])
     T1[part] = 3.0 * (control[part, 3] - control[part, 2])
     control[whole], T0[whole], T1[whole] = c1[whole], full[2][whole], full[3][whole]
     return control, T0, T1
+
+
+def _first_root(f, lo, hi, f_lo, f_hi):
+    """The clear end (f >= 0) of brackets [lo, hi] of a continuous f that is >= 0 at lo and
+    < 0 (or NaN) at hi, narrowed by at most :data:`_ROOT_STEPS` Illinois steps (regula falsi
+    whose retained end's value is halved; bisection where the values give no finite
+    secant) to :data:`_ROOT_WIDTH`.
+    ``f(at, x)``: f of the brackets ``at`` at x."""
+    lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
+    f_lo = np.where(np.isfinite(f_lo), f_lo, np.nan)
+    f_hi = np.where(np.isnan(f_hi), -np.inf, f_hi)
+    side = np.zeros(lo.size, np.int8)           # the end kept last (-1: lo, +1: hi)
+    for _ in range(_ROOT_STEPS):
+        if np.all(hi - lo <= _ROOT_WIDTH):
+            break
+        with np.errstate(divide="ignore", invalid="ignore"):
+            x = hi - f_hi * (hi - lo) / (f_hi - f_lo)
+        ok = np.isfinite(x) & (x > lo) & (x < hi)
+        x = np.where(ok, x, 0.5 * (lo + hi))
+        fx = f(np.arange(lo.size), x)
+        good = fx >= 0.0
+        # Illinois: halve the value kept at the end that stays twice in a row
+        f_lo = np.where(~good & (side == -1), 0.5 * f_lo, f_lo)
+        f_hi = np.where(good & (side == 1), 0.5 * f_hi, f_hi)
+        lo, f_lo = np.where(good, x, lo), np.where(good, fx, f_lo)
+        hi, f_hi = np.where(good, hi, x), np.where(good, f_hi, np.where(np.isnan(fx), -np.inf,
+                                                                        fx))
+        side = np.where(good, 1, -1).astype(np.int8)
+    return lo
 
 
 def _assembled(wing, body, side, sign, n_points, remedy, blending, I, B, E, T0, T1, control,
