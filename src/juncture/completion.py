@@ -154,11 +154,14 @@ def _fillet_maker(wing, fillet, opts, body0):
 
     def make(body, previous=None, warm=False):
         # previous: the last iterate's (iu, il, fu, fl) on a body it re-designs; its fillets'
-        # blending region is kept, and with warm=True its solutions seed the root finders.
+        # blending region and how far their tangents went towards the paper's are kept,
+        # and with warm=True its solutions seed the root finders.
         hints = (previous[0].u, previous[1].u) if warm else None
         iu, il = intersect_body_both(wing, body, hints=hints)
         ranges = (None, None) if previous is None else (previous[2].blend_range,
                                                         previous[3].blend_range)
+        shares = (None, None) if previous is None else (previous[2].towards,
+                                                        previous[3].towards)
         if fillet is None:
             return (iu, il, sharp_fillet(iu, line_ends(wing, body, iu)),
                     sharp_fillet(il, line_ends(wing, body, il)))
@@ -172,10 +175,11 @@ def _fillet_maker(wing, fillet, opts, body0):
             # Lines that miss: continued to the plane of symmetry, no fillet (misses.py).
             up, lo = line_ends(wing, body, iu), line_ends(wing, body, il)
             return (iu, il,
-                    ended_lines(cubic_fillet(wing, body, iu, blend_range=ranges[0], **kw), up,
-                                up.missed),
+                    ended_lines(cubic_fillet(wing, body, iu, blend_range=ranges[0],
+                                             towards=shares[0], **kw), up, up.missed),
                     ended_lines(cubic_fillet(wing, body, il, upper_reference=iu,
-                                             blend_range=ranges[1], **kw), lo, lo.missed))
+                                             blend_range=ranges[1], towards=shares[1], **kw),
+                                lo, lo.missed))
         if fillet == "circular":
             kw = dict(blend_length=opts.blend_length, n_points=opts.n_fillet_points,
                       tangent=opts.circular_tangent)

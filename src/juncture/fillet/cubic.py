@@ -40,7 +40,9 @@ So, per line:
   0) the thirds are taken along a direction turned continuously from y towards the chord.
   Where the paper's lengths reach a little past the legs (up to 1.5 times) they are kept as
   far as the curve stays clear of the surfaces themselves (checked on 33 points; on the
-  bundled transport the paper's cubic is kept on every line where it fits).
+  bundled transport the paper's cubic is kept on every line where it fits). How far is the
+  root of a continuous clearance margin, so the fillet moves continuously with the geometry
+  (keep_area's Newton steps rely on it; eighths of the way jumped).
 - **Safety net.** The planes are the surfaces' tangents; over a long fillet a twisted or
   curved wing can leave less room. Every line is checked against the surfaces themselves
   (33 points, and the radial gap's second derivative at B), and where one enters either,
@@ -82,6 +84,7 @@ its lower surface.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Literal
 
 import numpy as np
@@ -250,7 +253,7 @@ def _cross(a, b):
 def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
                  end: EndMode = "intersection", end_value=0.5, blend_length=None,
                  n_points=9, remedy=None, upper_reference=None, blending: Blending = "scale",
-                 blend_range=None, missed_lines: MissedLines = "plane"):
+                 blend_range=None, missed_lines: MissedLines = "plane", towards=None):
     """Cubic-arc fillet lines for one surface (TM-4406 eq 7, eqs 8-10).
 
     Parameters
@@ -289,6 +292,10 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     missed_lines : {"plane", "paper"}
         Lofting lines that miss the body: no fillet, the line degenerate where it reaches the
         plane of symmetry (default), or TM-4406's start at the bottom (module docstring).
+    towards : (n_stations,) float, optional
+        A previous fillet's ``towards`` (how far each line's tangent lengths went towards
+        the paper's): kept on every line where its curve is still clear of both surfaces,
+        so that the fillet on a re-designed body is a smooth function of it (keep_area).
 
     Returns
     -------
@@ -338,11 +345,14 @@ def cubic_fillet(wing, body, inter: BodyIntersection, theta_u=THETA_U_DEFAULT,
     phi = _safety_net(con, wing, side, body, I, found & live & ~paper_miss, phi, log)
     geo = con.geometry(phi)
     B, theta_b, T0, T1, control, reach = con.finish(geo)
+    share = np.full(len(I), np.nan)
     if reach.any():
-        control, T0, T1 = _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1)
-    return _assembled(wing, body, side, sign, n_points, remedy, blending, I, B, E, T0, T1,
-                      control, theta_b, u_e, beta, n_e, live, plane_miss, st["ends"],
-                      blend_range, log)
+        control, T0, T1, share[reach] = _towards_paper(con, geo, wing, side, body, I, reach,
+                                                       control, T0, T1, towards)
+    out = _assembled(wing, body, side, sign, n_points, remedy, blending, I, B, E, T0, T1,
+                     control, theta_b, u_e, beta, n_e, live, plane_miss, st["ends"],
+                     blend_range, log)
+    return replace(out, towards=share)
 
 
 def _check_options(wing, blending, remedy, missed_lines):
@@ -593,19 +603,18 @@ def _safety_net(con, wing, side, body, I, check, phi, log):
     return np.where(bad, lo * phi, phi)
 
 
-def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1):
+def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1, towards=None):
     """Where the paper's own tangent lengths (s = y) reach a little past the guaranteed
     legs, they are kept if the curve they give stays clear of both surfaces (the transport's
-    numbers stay the paper's), else taken as far towards them as it does: the control points
-    are linear in w (the guaranteed lengths at w = 0, the paper's at 1), so all candidates
-    w = k / 8 of all such lines are checked at once, and in the first cell that fails the
-    root of the clearance margin (:func:`_margins`) is found by regula falsi
-    (:data:`_ROOT_STEPS` Illinois steps). The fillet then moves continuously with the
-    geometry (a grid value alone jumped by an eighth of the way as the body shrank by 1e-7
-    under keep_area, and the added area with it: no re-designed body kept the area)."""
+    numbers stay the paper's), else taken as far towards them as it does
+    (:func:`_first_clear`): the control points are linear in w (the guaranteed lengths at
+    w = 0, the paper's at 1). ``towards`` (per line, NaN where not given): a previous
+    fillet's shares, kept where their curve is clear (keep_area's iterates: the share found
+    afresh on each re-designed body couples the stations the fillet spans, and the
+    iteration took four times the steps). Returns the control points, tangents and each
+    line's share."""
     full = con.finish(geo, 1.0)
     c0, c1 = control, full[4]
-    grid = np.arange(9) / 8.0
     rows = np.flatnonzero(reach)
     tol = tolerance(body)
 
@@ -617,26 +626,48 @@ def _towards_paper(con, geo, wing, side, body, I, reach, control, T0, T1):
                        np.repeat(I[r], k, axis=0), _SAMPLES)
         return tuple(m.reshape(len(r), k) for m in got)
 
-    inner, ends = margins(np.arange(rows.size), np.broadcast_to(grid, (rows.size, grid.size)))
-    # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
-    upto = np.cumprod(np.minimum(inner, ends)[:, 1:] >= 0.0, axis=1).sum(axis=1)
-    at = np.minimum(upto, 7)
-    # The ends do not move with w: where they are not clear, no candidate is and the
-    # guaranteed lengths are kept (w = 0), as where the curve at the cell's start is not.
-    w = np.where(upto == 8, 1.0, 0.0)
-    open_ = np.flatnonzero((upto < 8) & (ends[:, 0] >= 0.0)
-                           & (inner[np.arange(rows.size), at] >= 0.0))
-    if open_.size:
-        w[open_] = _first_root(lambda k, x: margins(open_[k], x[:, None])[0][:, 0],
-                               upto[open_] / 8.0, (upto[open_] + 1) / 8.0,
-                               inner[open_, upto[open_]], inner[open_, upto[open_] + 1])
+    w = np.full(rows.size, np.nan)
+    if towards is not None:
+        given = np.flatnonzero(np.isfinite(np.asarray(towards, float)[rows]))
+        if given.size:
+            share = np.clip(np.asarray(towards, float)[rows[given]], 0.0, 1.0)
+            inner, ends = margins(given, share[:, None])
+            keep = np.minimum(inner, ends)[:, 0] >= 0.0
+            w[given[keep]] = share[keep]
+    todo = np.flatnonzero(np.isnan(w))
+    if todo.size:
+        w[todo] = _first_clear(margins, todo)
     control, T0, T1 = control.copy(), T0.copy(), T1.copy()
     part, whole = rows[w < 1.0], rows[w == 1.0]
     control[part] = c0[part] + w[w < 1.0, None, None] * (c1 - c0)[part]
     T0[part] = 3.0 * (control[part, 1] - control[part, 0])
     T1[part] = 3.0 * (control[part, 3] - control[part, 2])
     control[whole], T0[whole], T1[whole] = c1[whole], full[2][whole], full[3][whole]
-    return control, T0, T1
+    return control, T0, T1, w
+
+
+def _first_clear(margins, todo):
+    """The shares w of the lines ``todo`` up to which their curves stay clear
+    (``margins(lines, w)``: :func:`_margins` of the candidates): all candidates w = k / 8 at
+    once, and in the first cell that fails the root of the clearance margin by regula falsi
+    (:func:`_first_root`). The fillet then moves continuously with the geometry (a grid
+    value alone jumped by an eighth of the way as the body shrank by 1e-7 under keep_area,
+    and the added area with it: no re-designed body kept the area)."""
+    grid = np.arange(9) / 8.0
+    inner, ends = margins(todo, np.broadcast_to(grid, (todo.size, grid.size)))
+    # The largest w up to which every candidate is clear (w = 1: the paper's cubic).
+    upto = np.cumprod(np.minimum(inner, ends)[:, 1:] >= 0.0, axis=1).sum(axis=1)
+    at = np.minimum(upto, 7)
+    # The ends do not move with w: where they are not clear, no candidate is and the
+    # guaranteed lengths are kept (w = 0), as where the curve at the cell's start is not.
+    w = np.where(upto == 8, 1.0, 0.0)
+    k = np.flatnonzero((upto < 8) & (ends[:, 0] >= 0.0)
+                       & (inner[np.arange(todo.size), at] >= 0.0))
+    if k.size:
+        w[k] = _first_root(lambda j, x: margins(todo[k[j]], x[:, None])[0][:, 0],
+                           upto[k] / 8.0, (upto[k] + 1) / 8.0, inner[k, upto[k]],
+                           inner[k, upto[k] + 1])
+    return w
 
 
 def _first_root(f, lo, hi, f_lo, f_hi):

@@ -50,6 +50,10 @@ class FilletLines:
         Bezier control points of each line when it is a cubic in s (the points are the
         cubic at equally spaced s); a row of NaN where a line is not (the z-constraint).
         Used for the exact added area (:func:`juncture.fillet.fillet_added_area`).
+    towards : (n_stations,) float or None
+        Cubic fillets: how far each line's tangent lengths went from the guaranteed legs
+        towards the paper's (0 to 1; NaN where the paper's fit): pass it back as
+        ``towards`` to build another body's fillet the same way (keep_area's iterates).
     """
 
     side: str
@@ -64,6 +68,7 @@ class FilletLines:
     log: tuple = ()
     blend_range: tuple = None
     control: np.ndarray = None
+    towards: np.ndarray = None
 
     def __post_init__(self):
         # A line whose points are one point to round-off (no fillet at the leading or
