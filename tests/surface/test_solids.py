@@ -167,8 +167,10 @@ def _check_fused(geo, path, atol=None):
     assert cKDTree(_vertices(shape)).query(exact)[0].max() < (atol or 1e-12 * size)
 
 
+@pytest.mark.slow  # OpenCASCADE's sewing and volume of a mesh solid (~13 s): make test-all
 def test_the_fused_solid_is_the_closed_surface(tmp_path):
-    """A wing-body with a cubic fillet (the transport's in the slow set)."""
+    """A wing-body with a cubic fillet (the transport's too, below). make test keeps one
+    valid closed solid per component (test_one_valid_closed_solid_per_component_copy)."""
     _check_fused(jc.complete(wing_body(), "cubic"), tmp_path / "f.step")
 
 
