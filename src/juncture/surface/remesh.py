@@ -263,11 +263,33 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
     if len(far):
+        far, xyz = _new_places(patch, splits, gid, far, on_surface(patch, vertices, far)[0])
+    if len(far):
         patch.extra_uv.append(far)
-        patch.extra_id.append(splits.add_vertex(on_surface(patch, vertices, far)[0]))
+        patch.extra_id.append(splits.add_vertex(xyz))
         return False
     patch.out, patch.pts, patch.local = gid[local], pts, local
     return True
+
+
+def _new_places(patch, splits, gid, uv, xyz):
+    """The chart points ``uv`` (3-D ``xyz``) but those that fall on a vertex of the surface
+    or on one another in 3-D (within :data:`TINY` of a millionth of the patch's size): where
+    the chart spreads what the surface holds at one place (the rows converging on a pointed
+    tail), a triangle's centre taken as a new point could land on a point there already,
+    and the two made triangles of no size (0 deg on a held-out arbitrary fuselage)."""
+    from scipy.spatial import cKDTree
+
+    near = 1e-6 * TINY * patch.size
+    every = splits.all()          # any patch's (a piece of the same surface holds them too)
+    box = np.all((every >= xyz.min(axis=0) - near) & (every <= xyz.max(axis=0) + near), axis=1)
+    have = every[box]
+    clear = (cKDTree(have).query(xyz, distance_upper_bound=near)[0] > near) if len(have) \
+        else np.ones(len(xyz), bool)
+    first = np.zeros(len(xyz), bool)
+    first[np.unique(np.round(xyz / max(near, 1e-300)), axis=0, return_index=True)[1]] = True
+    keep = clear & first
+    return uv[keep], xyz[keep]
 
 
 def _drop_flat_apexes(patch, splits, gid, local):
