@@ -690,7 +690,7 @@ def test_a_new_point_on_a_vertex_already_there_is_not_added():
     xyz = np.array([[1.0, 0.0, 0.0], [0.5, 0.5, 0.0], [0.5, 0.5, 0.0], [1.0, 1e-13, 0.0],
                     [0.2, 0.2, 0.0]])
     uv = np.arange(10.0).reshape(5, 2)
-    kept_uv, kept = rm._new_places(patch, splits, np.arange(3), uv, xyz)
+    kept_uv, kept = rm._new_places(patch, splits, uv, xyz)
     np.testing.assert_array_equal(kept, xyz[[1, 4]])
     np.testing.assert_array_equal(kept_uv, uv[[1, 4]])
 

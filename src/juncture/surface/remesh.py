@@ -263,7 +263,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
     if len(far):
-        far, xyz = _new_places(patch, splits, gid, far, on_surface(patch, vertices, far)[0])
+        far, xyz = _new_places(patch, splits, far, on_surface(patch, vertices, far)[0])
     if len(far):
         patch.extra_uv.append(far)
         patch.extra_id.append(splits.add_vertex(xyz))
@@ -272,7 +272,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     return True
 
 
-def _new_places(patch, splits, gid, uv, xyz):
+def _new_places(patch, splits, uv, xyz):
     """The chart points ``uv`` (3-D ``xyz``) but those that fall on a vertex of the surface
     or on one another in 3-D (within :data:`TINY` of a millionth of the patch's size): where
     the chart spreads what the surface holds at one place (the rows converging on a pointed
