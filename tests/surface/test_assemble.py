@@ -221,6 +221,56 @@ def test_no_flat_cap_runs_along_the_fuselage_behind_a_blunt_trailing_edge():
     assert side.sum() <= 2 and (not side.any() or np.ptp(x[side]) < 4.0)
 
 
+def _caps_on_one_other_component(mesh):
+    """Cap triangles whose edges on the networks' boundary all close triangles of one
+    component that is not the cap's (counted by a dictionary of directed edges)."""
+    names = np.array(mesh.surfaces)[mesh.surface]
+    cap = np.char.endswith(names.astype(str), " cap")
+    across = {}
+    for row in np.flatnonzero(~cap):
+        t = mesh.triangles[row].tolist()
+        for i in range(3):
+            across[(t[i], t[(i + 1) % 3])] = mesh.component[row]
+    found = []
+    for row in np.flatnonzero(cap):
+        t = mesh.triangles[row].tolist()
+        got = {across[(t[(i + 1) % 3], t[i])] for i in range(3)
+               if (t[(i + 1) % 3], t[i]) in across}
+        if len(got) == 1 and got != {mesh.component[row]}:
+            found.append(row)
+    return found
+
+
+def test_the_body_between_a_blunt_trailing_edge_and_its_split_point_is_the_bodys():
+    """A generated arbitrary fuselage with a flat side the wing's root crosses
+    (tests/data/generated/README.md): its upper and lower blocks meet on one point 6.4 ft aft
+    of the blunt trailing edge's two root points. The wedge between them lies on the body
+    and belongs to it; as a corner of the wing's trailing-edge cap (counterfactual: one such
+    triangle on each side, 0.25 deg) the cap's strip was zipped into triangles of 0.035 deg."""
+    import warnings
+
+    import trimesh
+
+    import juncture as jc
+    from tests.support import DATA
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(DATA / "generated" / "assembly"
+                                  / "arbitrary_body_split_meeting_aft_of_a_blunt_trailing_edge"
+                                    ".inp"))
+    mesh = assemble(geo)
+    assert _caps_on_one_other_component(mesh) == []
+    tm = trimesh.Trimesh(mesh.vertices, mesh.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    body = mesh.components.index("body")
+    p = mesh.vertices[mesh.triangles]
+    wedge = (mesh.component == body) & np.all(np.abs(p[..., 1]) == 5.368, axis=1) & \
+        (p[..., 0].min(axis=1) >= 69.5) & (p[..., 0].max(axis=1) <= 76.0) & \
+        (np.ptp(p[..., 2], axis=1) < 0.03)
+    assert wedge.sum() == 2                  # one on each side, now the body's
+
+
 def test_a_gap_between_two_blocks_is_filled_from_one_side_only():
     """A generated airplane (tests/data/generated/README.md) whose blunt trailing edge has
     both points at one station on the fuselage's flat side: behind them the two blocks end

@@ -373,9 +373,9 @@ def simple_loops(loop):
 
 
 def _caps(vertices, triangles, tol):
-    """Cap triangles for every planar boundary loop and every thin strip, and the loops left
-    open."""
-    caps, where, open_ = [], [], []
+    """Cap triangles for every planar boundary loop and every thin strip, the loops left
+    open, and which caps are strips."""
+    caps, where, open_, thin = [], [], [], []
     loops = [lp for loop in boundary_loops(triangles) for lp in simple_loops(loop)]
     for loop in loops:
         pts = vertices[loop]
@@ -394,10 +394,49 @@ def _caps(vertices, triangles, tol):
             else:
                 caps.append(strip)
                 where.append(loop[0])
+                thin.append(True)
             continue
         caps.append(_planar_cap(vertices, loop))
         where.append(loop[0])
-    return caps, where, open_
+        thin.append(False)
+    return caps, where, open_, thin
+
+
+def _owners(triangles, tri):
+    """(m, 3) the row of ``triangles`` across each edge of the cap triangles ``tri`` (the
+    triangle whose boundary edge it closes), -1 where the edge is inside the cap."""
+    n = int(max(triangles.max(initial=0), tri.max(initial=0))) + 1
+    e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
+    keys = e[:, 0].astype(np.int64) * n + e[:, 1]
+    rows = np.tile(np.arange(len(triangles)), 3)
+    order = np.argsort(keys, kind="stable")
+    keys, rows = keys[order], rows[order]
+    c = np.stack([tri[:, [1, 0]], tri[:, [2, 1]], tri[:, [0, 2]]], axis=1)  # reversed edges
+    want = c[..., 0].astype(np.int64) * n + c[..., 1]
+    at = np.clip(np.searchsorted(keys, want), 0, max(len(keys) - 1, 0))
+    return np.where(keys[at] == want, rows[at], -1) if len(keys) else np.full(want.shape, -1)
+
+
+def _wedges(triangles, component, tri):
+    """(the row of ``triangles`` whose surface each strip-cap triangle in ``tri`` belongs to,
+    -1: the cap's; the cap's component, that of most of its loop's edges, -1 if none): a
+    triangle of the strip whose edges on the loop all close triangles of
+    one component that is not the cap's (the body's gap between its upper and lower split
+    lines, which meet aft of a blunt trailing edge, not at it: a wedge a few feet long and
+    the trailing edge's thickness wide) lies on that component's surface, and belongs to it;
+    as the cap's, its thin point was zipped into triangles of 0.04 deg."""
+    owner = _owners(triangles, tri)
+    comp = np.where(owner >= 0, component[np.maximum(owner, 0)], -1)
+    on_loop = comp >= 0
+    if not on_loop.any():
+        return np.full(len(tri), -1), -1
+    values, counts = np.unique(comp[on_loop], return_counts=True)
+    mine = values[np.argmax(counts)]                       # the cap's own component
+    first = np.where(on_loop.any(axis=1), comp[np.arange(len(tri)), np.argmax(on_loop, 1)],
+                     -1)
+    same = np.all(~on_loop | (comp == first[:, None]), axis=1)
+    wedge = on_loop.any(axis=1) & same & (first != mine)
+    return np.where(wedge, owner[np.arange(len(tri)), np.argmax(on_loop, 1)], -1), mine
 
 
 def _planar_cap(vertices, loop):
@@ -605,16 +644,20 @@ def assemble(geometry, mirror=True, cap=True):
     open_loops = ()
     if cap:
         size = float(np.ptp(vertices, axis=0).max()) or 1.0
-        caps, where, open_loops = _caps(vertices, triangles, 1e-9 * size)
+        caps, where, open_loops, thin = _caps(vertices, triangles, 1e-9 * size)
         vertex_comp = np.zeros(len(vertices), int)
         vertex_comp[triangles.ravel()] = np.repeat(component, 3)
-        for tri, v in zip(caps, where):
-            c = int(vertex_comp[v])
+        for tri, v, strip in zip(caps, where, thin):
+            owner, c = _wedges(triangles, component, tri) if strip else (None, -1)
+            c = int(vertex_comp[v]) if c < 0 else int(c)
+            owner = np.full(len(tri), -1) if owner is None else owner
             name = f"{components[c]} cap"
             if name not in surfaces:
                 surfaces += (name,)
+            own = owner >= 0
             triangles = np.concatenate([triangles, tri])
-            component = np.concatenate([component, np.full(len(tri), c)])
-            surface = np.concatenate([surface, np.full(len(tri), surfaces.index(name))])
+            component = np.concatenate([component, np.where(own, component[owner], c)])
+            surface = np.concatenate([surface, np.where(own, surface[owner],
+                                                         surfaces.index(name))])
     return SurfaceMesh(vertices, triangles, component, surface, components, surfaces,
                        tuple(open_loops))
