@@ -70,3 +70,45 @@ def test_held_triangles_are_lifted_away_from_where_surfaces_crossed():
     np.testing.assert_array_equal(out[:, :2], pts[:, :2])
     np.testing.assert_allclose(out[:, 2], [0.0, 0.0, 0.0, 1.0 / TAPER, 1.0, 1.0],
                                atol=1e-15)
+
+
+def _rows_patch(gap):
+    """A flat grid patch of 6 x 6 points 1 apart whose third row is ``gap`` from the
+    second (the rest of the rows moved along), as a Patch with its boundary loop."""
+    x = np.concatenate([[0.0, 1.0, 1.0 + gap], 2.0 + gap + np.arange(3.0)])
+    u, v = np.meshgrid(x, np.arange(6.0), indexing="ij")
+    pts = np.stack([u.ravel(), v.ravel(), 0.0 * u.ravel()], 1)
+    quads = [(i * 6 + j, (i + 1) * 6 + j, (i + 1) * 6 + j + 1, i * 6 + j + 1)
+             for i in range(5) for j in range(5)]
+    tri = np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
+    ring = [*range(0, 6), *range(11, 36, 6), *range(34, 29, -1), *range(24, 0, -6)]
+    edges = np.stack([ring, np.roll(ring, -1)], 1)
+    return types.SimpleNamespace(ids=np.arange(36), tri=tri, xyz=pts, edges=edges,
+                                 kept=np.ones(36, bool), lift=None), pts
+
+
+def test_rows_crowded_to_a_tenth_of_their_spacing_are_not_kept():
+    """patch_roles.mark_rows: of a grid whose second and third rows are 0.05 apart (the
+    others 1), the inner points of those two rows are left out of the triangulation (their
+    shortest edge 0.05 of their longest); the boundary's stay, and so do points on an
+    arbitrary section's corner line; at a gap of 0.2 every point stays."""
+    from juncture.surface.creases import CORNER_LINE
+    from juncture.surface.patch_roles import ROWS, mark_rows, thin_rows
+
+    patch, pts = _rows_patch(0.05)
+    inner = np.zeros(36, bool)
+    inner[[7, 8, 9, 10, 13, 14, 15, 16]] = True          # rows 1 and 2, not on the loop
+    assert ROWS == 0.1
+    np.testing.assert_array_equal(thin_rows(pts, patch.tri) & inner,
+                                  inner & (np.arange(36) // 6 > 0) & (np.arange(36) // 6 < 3))
+    mark_rows([patch], None)
+    assert not patch.kept[[7, 8, 9, 10, 13, 14, 15, 16]].any()
+    assert patch.kept[patch.edges.ravel()].all() and patch.kept.sum() == 36 - 8
+    lines = np.zeros(36, int)
+    lines[[8, 14]] = CORNER_LINE
+    patch, _ = _rows_patch(0.05)
+    mark_rows([patch], None, lines)
+    assert patch.kept[[8, 14]].all() and patch.kept.sum() == 36 - 6
+    patch, _ = _rows_patch(0.2)
+    mark_rows([patch], None)
+    assert patch.kept.all()
