@@ -23,9 +23,6 @@ from .rows import unique_pairs
 #: the patch's boundary (surfaces meeting at less than atan(1 / TAPER) = 5.7 deg could
 #: still cross).
 TAPER = 10.0
-#: On a lifted surface, a network's inner vertex whose shortest edge is under this share of
-#: its longest is not kept (:func:`mark_rows`).
-ROWS = 0.1
 
 
 def sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
@@ -79,45 +76,10 @@ def sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
         for patch in got or ():
             patch.lift = lift
             charted.append(patch)
-    mark_rows(charted, lift, lines)
     mark_creases(charted, lines)
     mark_free(charted, splits)
     mark_slopes(charted, mesh)
     return charted, kept, strips, copied
-
-
-def mark_rows(charted, lift, lines=None):
-    """The network's inner vertices whose shortest edge is under :data:`ROWS` of their
-    longest are not kept (:func:`thin_rows`; patches charted with ``lift``, not those held
-    where surfaces crossed): a ring of points near a pod's nose, 0.06 ft apart and 0.7 ft
-    from the next, made triangles of 4.5 deg that refinement could not mend, 144 of them;
-    rows crowded towards a nose or a tail point the same. New points there are put on the
-    patch's triangles (which lie on the networks) and lifted onto the exact surface where
-    there is one, as everywhere. Vertices on an arbitrary section's corner lines
-    (``lines``, :data:`~juncture.surface.creases.CORNER_LINE`) stay, as do the
-    boundary's."""
-    from .creases import CORNER_LINE
-
-    for patch in charted:
-        if patch.lift is not lift:
-            continue
-        drop = thin_rows(patch.xyz, patch.tri)
-        drop[patch.edges.ravel()] = False
-        if lines is not None:
-            drop &= np.asarray(lines)[patch.ids] != CORNER_LINE
-        patch.kept = patch.kept & ~drop
-
-
-def thin_rows(points, tri):
-    """(n,) bool: the vertices whose shortest edge in the triangles ``tri`` is under
-    :data:`ROWS` times their longest."""
-    e = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
-    length = np.linalg.norm(points[e[:, 0]] - points[e[:, 1]], axis=1)
-    lo, hi = np.full(len(points), np.inf), np.zeros(len(points))
-    for k in (0, 1):
-        np.minimum.at(lo, e[:, k], length)
-        np.maximum.at(hi, e[:, k], length)
-    return lo < ROWS * hi
 
 
 def away_from(lift, crossings):
