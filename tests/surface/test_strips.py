@@ -319,26 +319,3 @@ def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
     assert np.all(tip | edge)
     assert triangle_angles(surface.vertices, surface.triangles).min() >= 5.0
 
-
-def test_a_strip_ending_in_an_oblique_rung_is_graded_from_its_width_there():
-    """A strip 0.04 wide whose sides end on a rung 0.2 along them (the upper and the lower
-    trailing edge reaching a curved fuselage apart, tests/data/generated/README.md) is as
-    wide at that corner as between its sides, and its side's first piece is at most the
-    spacing times that (the rung's length, 0.204, took pieces of 0.55 and triangles of 2 deg);
-    at its other end, where the sides pinch to one point, the width stays the distance to the
-    other side's first edge (no grading into the point)."""
-    import types
-
-    from juncture.surface.strips import Strip, _corner_width, _distance, presplit
-
-    v = np.array([[0.0, 0.0, 0.02], [10.0, 0.0, 0.02], [0.2, 0.0, -0.02], [10.0, 0.0, -0.02],
-                  [10.5, 0.0, 0.0]])
-    a, b = np.array([0, 1, 4]), np.array([0, 2, 3, 4])
-    start, end = _corner_width(v, a, b)
-    assert start == pytest.approx(0.04, rel=1e-12)
-    assert end == _distance(v[a[-1:]], v[b[:-1]])[0]
-    got = []
-    splits = types.SimpleNamespace(split=lambda i, j, t: got.append((i, j, t)))
-    presplit(Strip(np.arange(3), a, b, np.zeros(3)), v, splits, 25.0)
-    first = min(t for i, j, t in got if (i, j) == (0, 1)) * 10.0
-    assert first <= spacing(25.0) * 0.04 * (1 + 1e-9)

@@ -35,9 +35,6 @@ SHARE = 0.8
 #: no spacing helps the triangle at the corner), and each edge into at most :data:`MOST`.
 NARROWEST = 0.1
 MOST = 4000
-#: A strip's end is a rung across it (not a pinch) where its sides leave the corner more
-#: than this [deg] apart (:func:`_end_width`).
-RUNG = 10.0
 
 
 class Strip(NamedTuple):
@@ -123,31 +120,11 @@ def presplit(s, vertices, splits, min_angle):
 
 
 def _corner_width(vertices, side, other):
-    """The strip's width at the two corners its sides share (:func:`_end_width`)."""
-    return (_end_width(vertices, side, other), _end_width(vertices, side[::-1], other[::-1]))
-
-
-def _end_width(vertices, side, other):
-    """The strip's width at the corner ``side[0]`` (= ``other[0]``): the distance from it to
-    the other side without that corner (its rung, where the strip ends in an edge across it:
-    a trailing edge cut by the fuselage; the other side's first edge, where it pinches). Where
-    the rung runs obliquely (more than :data:`RUNG` deg off the side: the upper and the lower
-    trailing edge reaching a curved fuselage 0.2 ft apart along it, the edge 0.04 ft thick),
-    the distance to the line the other side runs on from the rung's end: the rung's length
-    took pieces five times too long and triangles of 2 deg there."""
-    v = vertices
-    far = float(_distance(v[side[:1]], v[other[1:]])[0])
-    if len(side) < 2 or len(other) < 3:
-        return far
-    corner, rung, along = v[side[0]], v[other[1]] - v[side[0]], v[side[1]] - v[side[0]]
-    norms = np.linalg.norm(rung) * np.linalg.norm(along)
-    if norms == 0.0 or rung @ along > np.cos(np.radians(RUNG)) * norms:
-        return far                                           # it pinches
-    d = v[other[2]] - v[other[1]]
-    if not d @ d > 0.0:
-        return far
-    off = corner - v[other[1]]
-    return min(far, float(np.linalg.norm(off - (off @ d) / (d @ d) * d)))
+    """The strip's width at the two corners its sides share: the distance from each to the
+    other side without that corner (its rung, where the strip ends in an edge across it: a
+    trailing edge cut by the fuselage; the other side's first edge, where it pinches)."""
+    return (float(_distance(vertices[side[:1]], vertices[other[1:]])[0]),
+            float(_distance(vertices[side[-1:]], vertices[other[:-1]])[0]))
 
 
 def _graded(length, w0, w1, most):
