@@ -700,8 +700,8 @@ def test_no_triangle_of_no_size_at_a_pointed_tail():
     """A held-out arbitrary fuselage ending in a point (tests/data/generated/README.md): near
     the point a new point landed on one another piece of the block had made, and two
     triangles had no size (0 deg). Now no two vertices of a triangle coincide (the smallest
-    angle was then 0.55 deg, at the wing cap's corner that a body wedge made; 3.99 deg since
-    the wedge is the body's; counterfactual: 0)."""
+    angle was then 0.55 deg, at the wing cap's corner that a body wedge made; 2.7 deg since
+    the wedge is the body's, near the tail; counterfactual: 0)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", jc.JunctureWarning)
         geo = jc.complete(jc.read(DATA / "generated" / "remesh"
