@@ -402,6 +402,11 @@ def _caps(vertices, triangles, tol):
     return caps, where, open_, thin
 
 
+#: A strip-cap triangle on another component's surface is that component's where its longest
+#: edge is over this many times its shortest (:func:`_wedges`).
+WEDGE = 10.0
+
+
 def _owners(triangles, tri):
     """(m, 3) the row of ``triangles`` across each edge of the cap triangles ``tri`` (the
     triangle whose boundary edge it closes), -1 where the edge is inside the cap."""
@@ -417,14 +422,17 @@ def _owners(triangles, tri):
     return np.where(keys[at] == want, rows[at], -1) if len(keys) else np.full(want.shape, -1)
 
 
-def _wedges(triangles, component, tri):
+def _wedges(vertices, triangles, component, tri):
     """(the row of ``triangles`` whose surface each strip-cap triangle in ``tri`` belongs to,
     -1: the cap's; the cap's component, that of most of its loop's edges, -1 if none): a
     triangle of the strip whose edges on the loop all close triangles of
     one component that is not the cap's (the body's gap between its upper and lower split
     lines, which meet aft of a blunt trailing edge, not at it: a wedge a few feet long and
     the trailing edge's thickness wide) lies on that component's surface, and belongs to it;
-    as the cap's, its thin point was zipped into triangles of 0.04 deg."""
+    as the cap's, its thin point was zipped into triangles of 0.04 deg. Only a thin such
+    triangle (longest edge over :data:`WEDGE` times its shortest): a short one (a centre
+    fin's strip running over the fuselage's top line, 0.02 ft long and 0.05 ft across)
+    stays the cap's, which zips it well, and its rung would be split to slivers."""
     owner = _owners(triangles, tri)
     comp = np.where(owner >= 0, component[np.maximum(owner, 0)], -1)
     on_loop = comp >= 0
@@ -435,7 +443,10 @@ def _wedges(triangles, component, tri):
     first = np.where(on_loop.any(axis=1), comp[np.arange(len(tri)), np.argmax(on_loop, 1)],
                      -1)
     same = np.all(~on_loop | (comp == first[:, None]), axis=1)
-    wedge = on_loop.any(axis=1) & same & (first != mine)
+    p = vertices[tri]
+    edge = np.linalg.norm(p - np.roll(p, -1, axis=1), axis=2)
+    thin = edge.max(axis=1) > WEDGE * edge.min(axis=1)
+    wedge = on_loop.any(axis=1) & same & (first != mine) & thin
     return np.where(wedge, owner[np.arange(len(tri)), np.argmax(on_loop, 1)], -1), mine
 
 
@@ -648,7 +659,7 @@ def assemble(geometry, mirror=True, cap=True):
         vertex_comp = np.zeros(len(vertices), int)
         vertex_comp[triangles.ravel()] = np.repeat(component, 3)
         for tri, v, strip in zip(caps, where, thin):
-            owner, c = _wedges(triangles, component, tri) if strip else (None, -1)
+            owner, c = _wedges(vertices, triangles, component, tri) if strip else (None, -1)
             c = int(vertex_comp[v]) if c < 0 else int(c)
             owner = np.full(len(tri), -1) if owner is None else owner
             name = f"{components[c]} cap"
