@@ -407,33 +407,40 @@ def _caps(vertices, triangles, tol):
 WEDGE = 10.0
 
 
-def _owners(triangles, tri):
-    """(m, 3) the row of ``triangles`` across each edge of the cap triangles ``tri`` (the
-    triangle whose boundary edge it closes), -1 where the edge is inside the cap."""
-    n = int(max(triangles.max(initial=0), tri.max(initial=0))) + 1
+def _edge_index(triangles, n):
+    """(sorted directed-edge keys a * n + b, the row of each) of ``triangles`` over ``n``
+    vertices, for :func:`_owners`."""
     e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
     keys = e[:, 0].astype(np.int64) * n + e[:, 1]
-    rows = np.tile(np.arange(len(triangles)), 3)
     order = np.argsort(keys, kind="stable")
-    keys, rows = keys[order], rows[order]
+    return keys[order], np.tile(np.arange(len(triangles)), 3)[order], n
+
+
+def _owners(index, tri):
+    """(m, 3) the row of the indexed triangles (:func:`_edge_index`) across each edge of the
+    cap triangles ``tri`` (the triangle whose boundary edge it closes), -1 where the edge is
+    inside the cap."""
+    keys, rows, n = index
     c = np.stack([tri[:, [1, 0]], tri[:, [2, 1]], tri[:, [0, 2]]], axis=1)  # reversed edges
     want = c[..., 0].astype(np.int64) * n + c[..., 1]
-    at = np.clip(np.searchsorted(keys, want), 0, max(len(keys) - 1, 0))
-    return np.where(keys[at] == want, rows[at], -1) if len(keys) else np.full(want.shape, -1)
+    if not len(keys):
+        return np.full(want.shape, -1)
+    at = np.minimum(np.searchsorted(keys, want), len(keys) - 1)
+    return np.where(keys[at] == want, rows[at], -1)
 
 
-def _wedges(vertices, triangles, component, tri):
-    """(the row of ``triangles`` whose surface each strip-cap triangle in ``tri`` belongs to,
-    -1: the cap's; the cap's component, that of most of its loop's edges, -1 if none): a
-    triangle of the strip whose edges on the loop all close triangles of
-    one component that is not the cap's (the body's gap between its upper and lower split
+def _wedges(vertices, index, component, tri):
+    """(the indexed row (:func:`_edge_index`) whose surface each strip-cap triangle in
+    ``tri`` belongs to, -1: the cap's; the cap's component, that of most of its loop's
+    edges, -1 if none): a triangle of the strip whose edges on the loop all close triangles
+    of one component that is not the cap's (the body's gap between its upper and lower split
     lines, which meet aft of a blunt trailing edge, not at it: a wedge a few feet long and
     the trailing edge's thickness wide) lies on that component's surface, and belongs to it;
     as the cap's, its thin point was zipped into triangles of 0.04 deg. Only a thin such
     triangle (longest edge over :data:`WEDGE` times its shortest): a short one (a centre
     fin's strip running over the fuselage's top line, 0.02 ft long and 0.05 ft across)
     stays the cap's, which zips it well, and its rung would be split to slivers."""
-    owner = _owners(triangles, tri)
+    owner = _owners(index, tri)
     comp = np.where(owner >= 0, component[np.maximum(owner, 0)], -1)
     on_loop = comp >= 0
     if not on_loop.any():
@@ -658,8 +665,9 @@ def assemble(geometry, mirror=True, cap=True):
         caps, where, open_loops, thin = _caps(vertices, triangles, 1e-9 * size)
         vertex_comp = np.zeros(len(vertices), int)
         vertex_comp[triangles.ravel()] = np.repeat(component, 3)
+        index = _edge_index(triangles, len(vertices))          # the networks' triangles
         for tri, v, strip in zip(caps, where, thin):
-            owner, c = _wedges(vertices, triangles, component, tri) if strip else (None, -1)
+            owner, c = _wedges(vertices, index, component, tri) if strip else (None, -1)
             c = int(vertex_comp[v]) if c < 0 else int(c)
             owner = np.full(len(tri), -1) if owner is None else owner
             name = f"{components[c]} cap"
