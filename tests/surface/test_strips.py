@@ -318,4 +318,3 @@ def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
     edge = (np.abs(p[:, 0] - te) < 0.05) & (np.abs(p[:, 1]) <= 0.003 * c + 1e-12)
     assert np.all(tip | edge)
     assert triangle_angles(surface.vertices, surface.triangles).min() >= 5.0
-

@@ -447,14 +447,14 @@ def _wedges(vertices, index, component, tri):
         return np.full(len(tri), -1), -1
     values, counts = np.unique(comp[on_loop], return_counts=True)
     mine = values[np.argmax(counts)]                       # the cap's own component
-    first = np.where(on_loop.any(axis=1), comp[np.arange(len(tri)), np.argmax(on_loop, 1)],
-                     -1)
+    rows, pick = np.arange(len(tri)), np.argmax(on_loop, axis=1)   # its first loop edge
+    first = comp[rows, pick]                       # -1 where no edge is on the loop
     same = np.all(~on_loop | (comp == first[:, None]), axis=1)
     p = vertices[tri]
     edge = np.linalg.norm(p - np.roll(p, -1, axis=1), axis=2)
     thin = edge.max(axis=1) > WEDGE * edge.min(axis=1)
-    wedge = on_loop.any(axis=1) & same & (first != mine) & thin
-    return np.where(wedge, owner[np.arange(len(tri)), np.argmax(on_loop, 1)], -1), mine
+    wedge = (first >= 0) & same & (first != mine) & thin
+    return np.where(wedge, owner[rows, pick], -1), mine
 
 
 def _planar_cap(vertices, loop):
@@ -667,9 +667,9 @@ def assemble(geometry, mirror=True, cap=True):
         vertex_comp[triangles.ravel()] = np.repeat(component, 3)
         index = _edge_index(triangles, len(vertices))          # the networks' triangles
         for tri, v, strip in zip(caps, where, thin):
-            owner, c = _wedges(vertices, index, component, tri) if strip else (None, -1)
+            owner, c = _wedges(vertices, index, component, tri) if strip else \
+                (np.full(len(tri), -1), -1)
             c = int(vertex_comp[v]) if c < 0 else int(c)
-            owner = np.full(len(tri), -1) if owner is None else owner
             name = f"{components[c]} cap"
             if name not in surfaces:
                 surfaces += (name,)
