@@ -100,6 +100,29 @@ def test_a_seam_curve_bending_past_the_lens_between_two_shared_points_closes():
     _closed_by_split(pts, tri, comp)
 
 
+def test_a_chain_partly_in_the_lens_between_two_shared_points_closes_whole():
+    """One side carries the ends of an arc of 0.6 rad (its chord stands 7.5 % of its length
+    off the arc's middle, past the lens), the other a point near one end, inside the lens,
+    and one at the middle, outside it: the whole chain is taken (a fillet's start line round
+    a corner of an arbitrary fuselage section between two of the wing's stations, seed 3434
+    draw 5: the row end half-way stood 5.6 % off the edge and the seam stayed open)."""
+    from juncture.surface.seams import LENS, _between
+
+    fine = np.array([0.0, 0.03, 0.3, 0.6])
+    pts, tri, comp = _two_sides(np.array([0.0, 0.6]), fine)
+    inside, _, _ = _between(_arc(fine[1:-1]), _arc(np.zeros(1))[0], _arc(np.full(1, 0.6))[0],
+                            LENS)
+    assert inside.tolist() == [True, False]
+    _closed_by_split(pts, tri, comp)
+
+
+def test_a_long_edge_takes_a_long_chain_between_two_shared_points():
+    """A wing network with two stations 28 ft apart beside a fuselage block with seven
+    stations between them (seed 3232 draw 16, cubic fillet): all seven are taken."""
+    pts, tri, comp = _two_sides(np.array([0.0, 0.8]), np.linspace(0.0, 0.8, 9))
+    _closed_by_split(pts, tri, comp)
+
+
 def test_a_chain_far_off_the_edge_between_two_shared_points_stays_open():
     """A chain farther than WIDE off the edge (an arc of 2.2 rad stands 29 % of its chord
     off at its middle) is not taken: the loop is not closed by guesswork."""

@@ -43,7 +43,7 @@ COLLINEAR = 1e-9
 #: (at most WIDE_STEPS points, each within WIDE of the edge's length from it) when no point
 #: lies in its lens: the seam curve bends between this side's points (:func:`_wide_chains`).
 WIDE = 0.25
-WIDE_STEPS = 4
+WIDE_STEPS = 16
 
 
 def _boundary_edges(triangles):
@@ -226,26 +226,39 @@ def _wide_chains(vertices, edges, owner, component, touch, links, per_edge, take
     A seam curve that bends between this side's sparse points (a fuselage row ending on the
     wing's exact intersection in its own plane, between two of the wing's chord stations)
     leaves such a loop: the other side's chain is the curve, this side's edge its chord.
+    An edge whose lens holds only some of that chain takes all of it: a fillet's start line
+    round a corner of an arbitrary section between two of the wing's stations 5.7 ft apart
+    left the fuselage's row end next to a station in the lens and the one half-way 0.32 ft
+    (5.6 %) off the edge, out of it, and the seam stayed open.
     """
     out = []
     for e, ((a, b), t) in enumerate(zip(edges.tolist(), owner.tolist())):
         mine = int(component[t])
-        if e in per_edge or not (touch[a] - {mine}) or not (touch[b] - {mine}):
+        if not (touch[a] - {mine}) or not (touch[b] - {mine}):
             continue
-        chain = _other_chain(a, b, mine, touch, links)
-        if not chain or taken.intersection(chain):
-            continue
-        near, _, _ = _between(vertices[chain], vertices[a], vertices[b], WIDE, np.inf)
-        if near.all():
-            out.append((e, chain))
-            taken.update(chain)
+        own = {v for _, v in per_edge.get(e, ())}
+        for chain in _other_chains(a, b, mine, touch, links):
+            if not own < set(chain) or (taken - own).intersection(chain):
+                continue
+            near, _, _ = _between(vertices[chain], vertices[a], vertices[b], WIDE, np.inf)
+            if near.all():
+                out.append((e, chain))
+                taken.update(chain)
+                break
     return out
 
 
 def _other_chain(a, b, mine, touch, links, steps=WIDE_STEPS):
-    """The points of the boundary path from ``a`` to ``b`` (not the edge itself) through
-    points that only other components' boundaries touch, at most ``steps`` of them; []
-    when there is none."""
+    """The points of the first boundary path from ``a`` to ``b`` (not the edge itself)
+    through points that only other components' boundaries touch, at most ``steps`` of them;
+    [] when there is none."""
+    return next(iter(_other_chains(a, b, mine, touch, links, steps)), [])
+
+
+def _other_chains(a, b, mine, touch, links, steps=WIDE_STEPS):
+    """Every such path (:func:`_other_chain`): the seam's other side, and the far boundary
+    of a strip between the same two shared points."""
+    out = []
     for first in links.get(a, ()):
         path, prev, v = [], a, first
         while v != b and len(path) < steps and mine not in touch.get(v, {mine}):
@@ -255,8 +268,8 @@ def _other_chain(a, b, mine, touch, links, steps=WIDE_STEPS):
                 break
             prev, v = v, step[0]
         if v == b and path:
-            return path
-    return []
+            out.append(path)
+    return out
 
 
 def _on_path(a, b, chain, links):
