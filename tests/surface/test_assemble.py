@@ -271,6 +271,53 @@ def test_the_body_between_a_blunt_trailing_edge_and_its_split_point_is_the_bodys
     assert wedge.sum() == 2                  # one on each side, now the body's
 
 
+@pytest.mark.parametrize("deck, part", [
+    ("tail_passing_under_the_tail_cone_over_three_stations", "tail 1"),
+    ("high_wing_trailing_edge_over_the_fuselage_top", "wing")])
+def test_a_surface_passing_the_body_on_one_side_is_joined_to_it_ahead_only(deck, part):
+    """Generated airplanes (tests/data/generated/README.md) whose lifting surface passes the
+    fuselage on one side near its trailing edge, both surfaces' lofting lines missing it
+    (continued to the plane of symmetry, :mod:`juncture.misses`): a tail under a tail cone
+    at its last three stations, a high wing's trailing edge over the fuselage's top. The
+    surface meets its mirror image there; the fuselage's rows at those stations end on the
+    plane of symmetry (counterfactual: at the row's last inner point, a slanted panel the
+    mirror image doubled: edges in four triangles) and the rows behind the trailing edge
+    start from the body, not from the surface's end point (counterfactual: a vertex in two
+    fans, Euler characteristic 1). Checked with an edge count, trimesh's closed, wound and
+    Euler characteristic of each body, and the body model's own distance."""
+    import warnings
+
+    import trimesh
+
+    import juncture as jc
+    from tests.support import DATA
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        cfg = jc.read(DATA / "generated" / "assembly" / f"{deck}.inp")
+        geo = jc.complete(cfg)
+    mesh = assemble(geo)
+    t = mesh.triangles
+    edges = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    assert np.all(counts == 2)
+    tm = trimesh.Trimesh(mesh.vertices, t, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    assert [b.euler_number for b in tm.split(only_watertight=False)] == [2] * len(
+        tm.split(only_watertight=False))
+    # the surface's points in the plane of symmetry off the body: several; those at its
+    # trailing edge (the last of them) on no body triangle behind it
+    v = mesh.vertices
+    own = np.unique(t[mesh.component == mesh.components.index(part)])
+    plane = own[v[own, 1] == 0.0]
+    off = plane[np.abs(cfg["body"].signed_distance(v[plane])) > 1e-3]
+    assert off.size >= 3
+    last = off[v[off, 0] == v[off, 0].max()]
+    body = t[mesh.component == mesh.components.index("body")]
+    at_end = body[np.isin(body, last).any(axis=1)]
+    assert last.size and np.all(v[at_end, 0] <= v[last[0], 0])
+
+
 def test_a_gap_between_two_blocks_is_filled_from_one_side_only():
     """A generated airplane (tests/data/generated/README.md) whose blunt trailing edge has
     both points at one station on the fuselage's flat side: behind them the two blocks end

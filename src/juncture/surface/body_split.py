@@ -247,12 +247,17 @@ def split_body(body, upper_regions, lower_regions, fins=(), n_upper=10, n_lower=
     ang_u, ang_l = through_corners(body, xu, ang_u), through_corners(body, xl, ang_l)
     up = body.point(xu[:, None], ang_u)
     lo = body.point(xl[:, None], ang_l)
+    _whole_rows(body, up, xu, ang_u, upper_regions, bottom)
+    _whole_rows(body, lo, xl, ang_l, lower_regions, top_value)
     _close_rows(up, xu, SLIVER * (x_end - x_nose), ang_u)
     _close_rows(lo, xl, SLIVER * (x_end - x_nose), ang_l)
     _end_at_points(up, xu, upper_regions, top_value)
     _end_at_points(lo, xl, lower_regions, bottom)
     for fin in fins:  # rows at a fin's stations start exactly at its points
         _end_at_points(up[:, ::-1], xu, [fin], None)
+    passing = _passing_ends(upper_regions, lower_regions, bottom, top_value)
+    up = _beyond_rows(body, up, xu, upper_regions, passing, top_value)
+    lo = _beyond_rows(body, lo, xl, lower_regions, passing, bottom)
     radial = radial_outward(body)
     nets = {"body upper": orient(up, radial), "body lower": orient(lo, radial)}
     if overlap is not None:
@@ -475,6 +480,78 @@ def _end_at_points(net, xs, regions, far):
         if far is not None:
             e = _empty(reg, far)[ok]
             net[rows[e]] = pts[e][:, None, :]
+
+
+def _whole_rows(body, net, xs, ang, regions, near):
+    """Rows that cover the whole half-section (a region's point at the angle ``near``, the
+    far side's: the wing passes on the other side of the body at that station, its point off
+    the body, :mod:`juncture.misses`) keep the body's own end on the plane of symmetry
+    before that point (set last by :func:`_end_at_points`): the body arc on all but the last
+    point (``net`` and the angles ``ang`` in place). Overwriting the arc's end with the point
+    made a slanted panel from the body's last inner point to it, which the mirror image
+    doubled (a tail passing under a tail cone at two stations: the edge between its two end
+    points in four triangles); the panel between the end and the point lies in the plane of
+    symmetry, where the mirror image's cancels it (:func:`juncture.surface.assemble.assemble`).
+    """
+    n = net.shape[1]
+    if n < 3:
+        return
+    for reg in regions:
+        if reg.points is None:
+            continue
+        rows = np.searchsorted(xs, reg.x)
+        ok = (rows < xs.size) & (xs[np.minimum(rows, xs.size - 1)] == reg.x)
+        for r in rows[ok & _empty(reg, near)]:
+            par = np.linspace(ang[r, 0], ang[r, -1], n - 1)[None, :]
+            par = through_corners(body, xs[r:r + 1], par)
+            ang[r, :-1] = par[0]
+            net[r, :-1] = body.point(np.full(par.shape, xs[r]), par)[0]
+
+
+def _passing_ends(uppers, lowers, bottom, top):
+    """{(region index, 0 or -1)}: the first or last stations of regions (upper and lower
+    curves of one component, index-aligned) at which both of its surfaces pass on one side
+    of the body (both lines miss it there, :mod:`juncture.misses`: the upper and lower
+    curves' points off the body, both at the angle of its top or both at its bottom)."""
+    out = set()
+    for k, (u, lo) in enumerate(zip(uppers, lowers)):
+        if u.points is None or lo.points is None or not u.x.size or not lo.x.size:
+            continue
+        for end in (0, -1):
+            a, b = u.theta[end], lo.theta[end]
+            if a == b and any(abs(a - v) <= 1e-12 for v in (bottom, top)):
+                out.add((k, end))
+    return out
+
+
+def _beyond_rows(body, net, xs, regions, passing, far):
+    """``net`` with a second row at each of the ``passing`` ends of its regions, on the side
+    away from the region: the same station with the body's own points only (the region's
+    point off the body left out: an empty row is the body's point at the block's far angle
+    ``far``, a whole row (:func:`_whole_rows`) ends twice at its arc's end). The wing passes
+    the body there without touching it; its end point is joined to the body's rows on the
+    region's side only (and in the plane of symmetry, where the mirror image cancels the
+    panels). Joined on both sides, the rows beyond fanned to it as well: the mirrored
+    surface touched itself at that point (a tail's trailing edge under a tail cone: a vertex
+    in two fans) or along the edge to it (a high wing's trailing edge over the fuselage's
+    top: an edge in four triangles)."""
+    add = []
+    for k, end in sorted(passing):
+        reg = regions[k] if k < len(regions) else None
+        if reg is None or reg.points is None or not reg.x.size:
+            continue
+        r = int(np.searchsorted(xs, reg.x[end]))
+        if r >= xs.size or xs[r] != reg.x[end]:
+            continue
+        row = np.array(net[r])
+        if _empty(reg, far)[end]:
+            row[:] = body.point(np.full(1, xs[r]), np.full(1, far))[0]
+        else:
+            row[-1] = row[-2]
+        add.append((r + (end == -1), row))
+    for r, row in sorted(add, key=lambda a: -a[0]):
+        net = np.insert(net, r, row, axis=0)
+    return net
 
 
 def seam_gap(points, net):
