@@ -37,7 +37,13 @@ bottom for the lower), that arc is empty: the network row is degenerate at Q (ev
 so the body and wing networks stay closed. Where both surfaces of a line pass on the same
 side of the body (the wing does not touch it at that chordwise station, e.g. a leading edge
 that runs ahead of a slender nose), the other arc covers the whole half-section and its last
-point is Q: a panel in the plane of symmetry joins the body to the wing there.
+point is Q: a panel in the plane of symmetry joins the body to the wing there. In the
+fuselage split by theta_b (TM-4607, the default layout) that arc ends on the plane at the
+body's own point before Q, so the panel lies in the plane, where the mirror image's cancels
+it in a mesh of both halves, and at the first or last station of such a run (a tail's
+trailing edge passing under a tail cone, a high wing's over the fuselage's top) the body's
+stations beyond start from the body, not from Q
+(:func:`juncture.surface.body_split.split_body`).
 
 ``theta`` of an end point Q is that of the body point nearest to it in the plane of symmetry
 (+pi/2 above the body, -pi/2 below; 1 and 0 on an arbitrary-section body), so boundary curves
