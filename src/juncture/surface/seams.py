@@ -40,8 +40,9 @@ END = 0.4
 COLLINEAR = 1e-9
 
 #: A boundary edge between two shared points takes the other side's chain between them
-#: (at most WIDE_STEPS points, each within WIDE of the edge's length from it) when no point
-#: lies in its lens: the seam curve bends between this side's points (:func:`_wide_chains`).
+#: (at most WIDE_STEPS points, each within WIDE of the edge's length from it) when its lens
+#: holds none of them or only some: the seam curve bends between this side's points
+#: (:func:`_wide_chains`).
 WIDE = 0.25
 WIDE_STEPS = 16
 
