@@ -467,14 +467,20 @@ def _kept(xg, regions, far):
     return xg[keep]
 
 
+def _rows_at(xs, x):
+    """(rows, ok): where stations ``x`` fall in the sorted stations ``xs``, and which of them
+    are among them exactly."""
+    rows = np.searchsorted(xs, x)
+    return rows, (rows < xs.size) & (xs[np.minimum(rows, xs.size - 1)] == x)
+
+
 def _end_at_points(net, xs, regions, far):
     """Rows at a region's stations end at its points; empty rows (at angle ``far``; none
     when it is None) are all that point."""
     for reg in regions:
         if reg.points is None:
             continue
-        rows = np.searchsorted(xs, reg.x)
-        ok = (rows < xs.size) & (xs[np.minimum(rows, xs.size - 1)] == reg.x)
+        rows, ok = _rows_at(xs, reg.x)
         rows, pts = rows[ok], reg.points[ok]
         net[rows, -1] = pts
         if far is not None:
@@ -499,8 +505,7 @@ def _whole_rows(body, net, xs, ang, regions, near):
     for reg in regions:
         if reg.points is None:
             continue
-        rows = np.searchsorted(xs, reg.x)
-        ok = (rows < xs.size) & (xs[np.minimum(rows, xs.size - 1)] == reg.x)
+        rows, ok = _rows_at(xs, reg.x)
         for r in rows[ok & _empty(reg, near)]:
             par = np.linspace(ang[r, 0], ang[r, -1], n - 1)[None, :]
             par = through_corners(body, xs[r:r + 1], par)
@@ -540,9 +545,10 @@ def _beyond_rows(body, net, xs, regions, passing, far):
         reg = regions[k] if k < len(regions) else None
         if reg is None or reg.points is None or not reg.x.size:
             continue
-        r = int(np.searchsorted(xs, reg.x[end]))
-        if r >= xs.size or xs[r] != reg.x[end]:
+        rows, ok = _rows_at(xs, reg.x[end:][:1])
+        if not ok[0]:
             continue
+        r = int(rows[0])
         row = np.array(net[r])
         if _empty(reg, far)[end]:
             row[:] = body.point(np.full(1, xs[r]), np.full(1, far))[0]
