@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from juncture.surface.assemble import _zip_chains, zip_strip
-from juncture.surface.strips import MOST, NARROWEST, _graded, spacing
+from juncture.surface.strips import MOST, NARROWEST, _corner_width, _graded, spacing
 
 SPACING = spacing(25.0)
 
@@ -18,14 +18,51 @@ SPACING = spacing(25.0)
 def test_graded_pieces_are_at_most_spacing_times_the_width_where_they_start(length, w0, w1):
     """Every piece of the edge is no longer than SPACING times the strip's width at the
     piece's narrow end (linear between the edge's ends; no narrower than NARROWEST of the
-    widest), unless the edge takes more than MOST pieces."""
+    widest), unless the edge takes more than MOST pieces; where the strip pinches (w0 = 0)
+    the first piece reaches no further than where it is NARROWEST of its widest."""
     t = np.concatenate([[0.0], _graded(length, w0, w1, SPACING), [1.0]])
     assert np.all(np.diff(t) > 0.0)
     if len(t) - 1 >= MOST:
         return
     thin = np.minimum(w0 + (w1 - w0) * t[:-1], w0 + (w1 - w0) * t[1:])
     most = SPACING * np.maximum(thin, NARROWEST * max(w0, w1)) / length
-    assert np.all(np.diff(t) <= most * (1.0 + 1e-9) + 1e-12)
+    ok = np.diff(t) <= most * (1.0 + 1e-9) + 1e-12
+    if w0 == 0.0 and len(t) > 2:
+        assert t[1] <= NARROWEST * (1.0 + 1e-9)
+        ok = ok[1:]
+    assert np.all(ok)
+
+
+def test_a_pinched_edge_leaves_one_piece_at_the_corner():
+    """A strip 0 wide at an edge's start (a trailing edge closing at a pointed tip): its
+    first piece reaches to where the strip is NARROWEST of its widest (the corner's one
+    triangle), the rest are graded; with the floor all the way (the old rule) the edge took
+    pieces of constant length to the corner, each zipped into a triangle thinner than the
+    last."""
+    t = _graded(64.0, 0.0, 0.038, SPACING)
+    assert t[0] == pytest.approx(NARROWEST, rel=0.02)
+    assert np.all(np.diff(t) > 0.0) and np.all(np.diff(np.diff(t)) > -1e-12)
+    width = 0.038 * t[:-1]
+    assert np.all(np.diff(t) * 64.0 <= SPACING * width * (1.0 + 1e-6))
+
+
+def test_a_strip_is_0_wide_where_it_pinches_and_a_rung_wide_where_it_ends_in_one():
+    """strips._corner_width: at a corner both sides leave within PINCH of one another the
+    strip is 0 wide (measured past the corner, to the other side's far points, it was 64 ft
+    at a pointed wing tip whose trailing edge closes there, and the outer panel's strip was
+    not split at all: 124 triangles under 5 deg along it, held-out seed 3434 draw 21); at a
+    corner where one side runs across the strip (its rung, a trailing edge cut by the
+    fuselage) it is the rung's length."""
+    pinch_a = np.array([[0.0, 0.0, 0.0], [0.0, 64.0, 0.0], [0.0, 128.0, 0.0]])
+    pinch_b = np.array([[0.0, 0.0, 0.0], [0.0, 64.0, 0.04], [0.0, 128.0, 0.0]])
+    rung_b = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.1], [0.0, 64.0, 0.04],
+                       [0.0, 128.0, 0.0]])
+    for b, start in ((pinch_b, 0.0), (rung_b, 0.1)):
+        v = np.concatenate([pinch_a, b[1:-1]])
+        a_ids = np.arange(3)
+        b_ids = np.concatenate([[0], 3 + np.arange(len(b) - 2), [2]])
+        w = _corner_width(v, a_ids, b_ids)
+        assert w == (pytest.approx(start), 0.0)
 
 
 def test_graded_is_the_same_edge_from_either_end():
@@ -318,3 +355,37 @@ def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
     edge = (np.abs(p[:, 0] - te) < 0.05) & (np.abs(p[:, 1]) <= 0.003 * c + 1e-12)
     assert np.all(tip | edge)
     assert triangle_angles(surface.vertices, surface.triangles).min() >= 5.0
+
+
+@pytest.mark.slow  # a held-out airplane meshed whole (> 10 s): make test-all
+def test_a_strip_closing_at_a_pointed_tip_is_split_to_its_spacing_up_to_its_last_tenth():
+    """The generated airplane whose blunt trailing edge closes at a wing tip of no chord
+    (tests/data/generated/README.md): the strip pinches there, so its side is split to its
+    spacing but for the last tenth of the edge to the tip (strips._graded). Its triangles
+    under 5 deg all lie there, where the wing's charts split that piece (before, measured
+    past the corner, the strip was 64 ft wide at the tip, not split, and had slivers along
+    the whole outer panel, from 63 ft inboard of the tip)."""
+    import warnings
+
+    import trimesh
+
+    import juncture as jc
+    from juncture.surface.quality import triangle_angles
+    from tests.support import DATA
+
+    deck = DATA / "generated" / "remesh" / "blunt_trailing_edge_closing_at_a_pointed_tip.inp"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(jc.read(deck))
+        surface = jc.mesh(geo)
+    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+    assert tm.is_watertight and tm.is_winding_consistent
+    smallest = triangle_angles(surface.vertices, surface.triangles).min(axis=1)
+    name = np.array(surface.surfaces)[surface.surface]
+    tip, before = 136.58, 72.67               # the tip's and the section before's span station
+    y = np.abs(surface.vertices[surface.triangles][:, :, 1]).min(axis=1)
+    cap = name == "wing cap"
+    assert np.any(cap & (smallest < 5.0))     # the corner's piece: what is left (see above)
+    assert np.all(y[cap & (smallest < 5.0)] >= tip - NARROWEST * (tip - before) - 1e-6)
+    outer = cap & (y > before + 1.0) & (y < tip - NARROWEST * (tip - before))
+    assert outer.sum() > 1000 and smallest[outer].min() >= 5.0

@@ -34,6 +34,8 @@ SHARE = 0.8
 #: ... but no finer than that times this share of its widest (where it pinches to a point
 #: no spacing helps the triangle at the corner), and each edge into at most :data:`MOST`.
 NARROWEST = 0.1
+#: A strip pinches at a corner its sides leave within this angle [deg] of one another.
+PINCH = 20.0
 MOST = 4000
 
 
@@ -120,22 +122,38 @@ def presplit(s, vertices, splits, min_angle):
 
 
 def _corner_width(vertices, side, other):
-    """The strip's width at the two corners its sides share: the distance from each to the
-    other side without that corner (its rung, where the strip ends in an edge across it: a
-    trailing edge cut by the fuselage; the other side's first edge, where it pinches)."""
-    return (float(_distance(vertices[side[:1]], vertices[other[1:]])[0]),
-            float(_distance(vertices[side[-1:]], vertices[other[:-1]])[0]))
+    """The strip's width at the two corners its sides share: 0 where it pinches there (its
+    sides leave the corner within :data:`PINCH` of one another: a blunt trailing edge that
+    closes at a pointed tip), else the distance from each to the other side without that
+    corner (its rung, where the strip ends in an edge across it: a trailing edge cut by the
+    fuselage)."""
+    out = []
+    for end, step in ((0, 1), (-1, -2)):
+        c = vertices[side[end]]
+        u, v = vertices[side[step]] - c, vertices[other[step]] - c
+        cos = u @ v / max(np.linalg.norm(u) * np.linalg.norm(v), 1e-300)
+        rest = other[1:] if end == 0 else other[:-1]
+        out.append(0.0 if cos > np.cos(np.radians(PINCH)) else
+                   float(_distance(vertices[side[end]][None], vertices[rest])[0]))
+    return out[0], out[1]
 
 
 def _graded(length, w0, w1, most):
     """Inner fractions of an edge of ``length`` whose strip is ``w0`` wide at its start and
     ``w1`` at its end (linearly between): each piece at most ``most`` times the width where
     it starts, marched from the narrow end; :data:`MOST` equal pieces where that takes
-    more."""
+    more. Where the strip pinches (0 wide at one end) the piece at that end reaches to
+    where it is :data:`NARROWEST` of its widest: one triangle to the corner, whose angle
+    there is the corner's (pieces of ``most`` times that width all the way there would be
+    zipped into triangles ever thinner). The wing's charts beside it may still split that
+    piece (their refinement into a pointed tip's corner does), and each such point is a
+    sliver of the strip there: pieces short enough for good triangles all the way to the
+    corner would take thousands per e-fold of the distance to it."""
     thin, wide = min(w0, w1), max(w0, w1)
+    first = NARROWEST if thin == 0.0 else 0.0
     if length <= most * max(thin, NARROWEST * wide) or wide <= 0.0:
         return np.zeros(0)
-    t = [0.0]
+    t = [0.0, first] if first else [0.0]
     while t[-1] < 1.0 and len(t) <= MOST:
         t.append(t[-1] + most * max(thin + (wide - thin) * t[-1], NARROWEST * wide) / length)
     if t[-1] < 1.0:
