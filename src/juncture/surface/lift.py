@@ -241,21 +241,39 @@ def wing_lift(geometry, mesh):
 
 def _on_sides(wing, vertices, image, tol):
     """(per vertex: on the upper side within ``tol``, on the lower side), inside the wing's
-    span and chord."""
+    span and chord; a vertex at the one point of a section of no chord (a pointed tip) is
+    on both."""
     flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
     c = vertices * flip
     t = wing.thickness_axis
     up, low, inside = _thickness(wing, c)
-    return inside & (np.abs(c[:, t] - up) <= tol), inside & (np.abs(c[:, t] - low) <= tol)
+    tip = _at_points_of_no_chord(wing, c, tol)
+    return ((inside & (np.abs(c[:, t] - up) <= tol)) | tip,
+            (inside & (np.abs(c[:, t] - low) <= tol)) | tip)
+
+
+def _at_points_of_no_chord(wing, p, tol):
+    """(n,) bool: points within ``tol`` of the one point of a section of no chord."""
+    s = np.asarray(wing.span_stations, float)
+    le, te = edges_x(wing, s)
+    ends = s[~(te > le)]
+    if not len(ends):
+        return np.zeros(len(p), bool)
+    tips = wing.point(ends, np.zeros(len(ends)), "upper")
+    return np.linalg.norm(p[:, None, :] - tips[None], axis=2).min(axis=1) <= tol
 
 
 def _onto_sections(wing, points, corners, seam, image, tol, sized, flags):
     """Points moved along the thickness axis onto the side of the wing their flat triangle
     lies on: each corner on that side within ``tol`` or on a ``seam`` with another component
     (the root line's points at the fuselage's stations lie on the body, off the wing's PCHIP
-    sections), at least one on it. A fillet's triangles have corners off both."""
+    sections), at least one on it. A fillet's triangles have corners off both. Where as many
+    corners lie on either side (a leading or trailing edge's, a pointed tip's, with the
+    others on seams: a wing of two sections ending in a point), the side the triangle
+    faces (outward) decides."""
     flip = np.array([1.0, -1.0, 1.0]) if image else np.ones(3)
     t = wing.thickness_axis
+    faces_up = (_normals(corners) * flip)[:, t] > 0.0
     corners = corners * flip
     facing = np.abs(_normals(corners)[:, t]) > WING_FACING
     on_up, on_low = flags
@@ -266,8 +284,9 @@ def _onto_sections(wing, points, corners, seam, image, tol, sized, flags):
     up, low, inside = _thickness(wing, p)
     out = p.copy()
     # A leading or trailing edge's corner lies on both sides: the side with more corners.
-    up_only = on_up & (~on_low | (n_up > n_low)) & inside
-    low_only = on_low & (~on_up | (n_low > n_up)) & inside
+    tie = n_up == n_low
+    up_only = on_up & (~on_low | (n_up > n_low) | (tie & faces_up)) & inside
+    low_only = on_low & (~on_up | (n_low > n_up) | (tie & ~faces_up)) & inside
     out[:, t] = np.where(up_only, up, out[:, t])
     out[:, t] = np.where(low_only, low, out[:, t])
     moved = up_only | low_only
