@@ -391,29 +391,39 @@ def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_lo
     assert np.mean(angles >= 20.0) > 0.99 and angles.min() > 1.0
 
 
-@pytest.mark.slow  # one held-out airplane meshed twice (~40 s): make test-all
+@pytest.mark.slow  # two held-out airplanes meshed three times (~40 s): make test-all
 def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing(monkeypatch):
-    """A held-out airplane (tests/data/generated/README.md) whose re-triangulated fuselage
-    block and low wing crossed: the retry held the fuselage's network triangles near the
-    crossing, facets ten feet long and a quarter of the circle round, with their new points
-    left on them (0.27 ft inside, the volume 1.7 % short of the union's). Held points are
-    now lifted but within a crossing's reach, rising from there at 1 / TAPER: the enclosed
-    volume is within 0.6 % of the union's cells (tests/union_oracle.py), closed and wound
-    consistently (trimesh). Counterfactual: held points left unlifted, over 1 % short. (0.43 %
-    short until session 33; 0.52 % since the fuselage's rows behind the wing's trailing edge,
-    which passes under the tail cone, start from the body and no longer fan to the wing's
-    end point: that web, outside both components, held 2.2 ft^3.)"""
+    """Held-out airplanes (tests/data/generated/README.md) whose re-triangulated fuselage
+    block and low wing crossed: the retry holds the fuselage's network triangles near the
+    crossing (`pipeline._held_near`), facets up to ten feet long and a quarter of the circle
+    round. Their new points were left on them (0.27 ft inside; the canted fin's airplane
+    1.7 % short of the union's volume); they are now lifted but within a crossing's reach,
+    rising from there at 1 / TAPER. The low wing under a narrowing tail cone still takes that
+    path: closed, wound consistently (trimesh), within 0.5 % of the union's cells
+    (tests/union_oracle.py; -0.30 %), and left unlifted the held points leave it further short
+    (-0.43 %). The canted fin's airplane no longer crosses since session 34 (the lift at a
+    tip of no chord): meshed on the first try, -0.41 % (-0.52 % with the held retry)."""
     import juncture.surface.patch_roles as patch_roles
+    import juncture.surface.pipeline as pipeline
 
-    deck = DATA / "generated" / "remesh" / \
-        "canted_fin_between_a_low_wing_and_the_tail_cone_top.inp"
-    geo = _complete(deck)
-    cells = union_volume(geo.configuration, n=121, cells=1500)
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", jc.JunctureWarning)   # the re-triangulation kept
-        surface = jc.mesh(geo)
-    tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
-    assert tm.is_watertight and tm.is_winding_consistent
-    assert abs(tm.volume / cells - 1.0) < 0.006
+    held = []
+    near = pipeline._held_near
+    monkeypatch.setattr(pipeline, "_held_near", lambda *a: held.append(1) or near(*a))
+    volumes = {}
+    for name in ("low_wing_trailing_edge_under_a_narrowing_tail_cone",
+                 "canted_fin_between_a_low_wing_and_the_tail_cone_top"):
+        geo = _complete(DATA / "generated" / "remesh" / f"{name}.inp")
+        cells = union_volume(geo.configuration, n=121, cells=1500)
+        held.clear()
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", jc.JunctureWarning)   # the re-triangulation kept
+            surface = jc.mesh(geo)
+        tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
+        assert tm.is_watertight and tm.is_winding_consistent
+        assert abs(tm.volume / cells - 1.0) < 0.005
+        volumes[name] = (len(held), tm.volume / cells - 1.0, geo, cells)
+    assert volumes["low_wing_trailing_edge_under_a_narrowing_tail_cone"][0] == 1
+    assert volumes["canted_fin_between_a_low_wing_and_the_tail_cone_top"][0] == 0
+    _, kept, geo, cells = volumes["low_wing_trailing_edge_under_a_narrowing_tail_cone"]
     monkeypatch.setattr(patch_roles, "away_from", lambda lift, crossings: None)
-    assert jc.mesh(geo).volume() / cells - 1.0 < -0.01
+    assert jc.mesh(geo).volume() / cells - 1.0 < kept - 0.001
