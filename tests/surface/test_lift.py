@@ -40,6 +40,21 @@ def _owners(mesh, name):
     return np.flatnonzero(mine & ~other)
 
 
+def _new_on_sections(geo, assembled, lifted):
+    """(points, on): the wing's own new vertices of ``lifted`` (the image half mirrored back)
+    and whether each lies on the model's upper or lower surface at its span station and
+    chord fraction (1e-9 of the size)."""
+    wing = geo.configuration.components["wing"]
+    new = _owners(lifted, "wing")
+    new = new[new >= len(assembled.vertices)]
+    p = lifted.vertices[new].copy()
+    p[:, 1] = np.abs(p[:, 1])
+    up, low, inside = _thickness(wing, p)
+    size = np.ptp(lifted.vertices, axis=0).max()
+    t = wing.thickness_axis
+    return p, inside & (np.minimum(np.abs(p[:, t] - up), np.abs(p[:, t] - low)) <= 1e-9 * size)
+
+
 def test_the_enclosed_volume_comes_to_the_models(transport):
     """Against the model's A(x) integral: within 0.8 % (-0.7 %; the networks' own triangles:
     -1.3 %), and well under the error of new points left on the flat triangles."""
@@ -126,16 +141,8 @@ def test_new_points_on_a_wing_lie_on_its_sections(transport):
     """The wing's own new vertices are on the model's upper or lower surface (PCHIP through
     the ordinates), at their span station and chord fraction."""
     _, geo, assembled, lifted = transport
-    new = _owners(lifted, "wing")
-    new = new[new >= len(assembled.vertices)]
-    wing = geo.configuration.components["wing"]
-    p = lifted.vertices[new].copy()
-    p[:, 1] = np.abs(p[:, 1])  # the image half mirrored back
-    up, low, inside = _thickness(wing, p)
-    size = np.ptp(lifted.vertices, axis=0).max()
-    t = wing.thickness_axis
-    on = inside & (np.minimum(np.abs(p[:, t] - up), np.abs(p[:, t] - low)) <= 1e-9 * size)
-    assert len(new) > 1000 and on.mean() > 0.8
+    p, on = _new_on_sections(geo, assembled, lifted)
+    assert len(p) > 1000 and on.mean() > 0.8
 
 
 def test_points_off_a_components_own_triangles_stay(transport):
@@ -237,15 +244,7 @@ def test_a_wing_panel_cut_by_a_footprint_is_lifted_onto_its_sections():
     lifted = remesh(assembled, lift=surface_lift(geo, assembled))
     report = check_mesh(lifted.vertices, lifted.triangles)
     assert report.ok, report.failures()
-    wing = geo.configuration.components["wing"]
-    new = _owners(lifted, "wing")
-    new = new[new >= len(assembled.vertices)]
-    p = lifted.vertices[new].copy()
-    p[:, 1] = np.abs(p[:, 1])
-    up, low, inside = _thickness(wing, p)
-    size = np.ptp(lifted.vertices, axis=0).max()
-    t = wing.thickness_axis
-    on = inside & (np.minimum(np.abs(p[:, t] - up), np.abs(p[:, t] - low)) <= 1e-9 * size)
+    p, on = _new_on_sections(geo, assembled, lifted)
     # Between the fuselage and the fin, clear of the root line (where new points are lifted
     # only part of the way, remesh.TAPER) and of the tip cap.
     panel = (p[:, 1] > 10.0) & (p[:, 1] < 34.0)
@@ -269,14 +268,7 @@ def test_a_wing_of_two_sections_ending_in_a_point_is_lifted_onto_its_sections():
         geo = jc.complete(jc.read(PDAS_DECK), blocks="split")
     assembled = assemble(geo)
     lifted = remesh(assembled, lift=surface_lift(geo, assembled))
-    wing = geo.configuration.components["wing"]
-    new = _owners(lifted, "wing")
-    new = new[new >= len(assembled.vertices)]
-    p = lifted.vertices[new].copy()
-    p[:, 1] = np.abs(p[:, 1])
-    up, low, inside = _thickness(wing, p)
-    size = np.ptp(lifted.vertices, axis=0).max()
-    on = inside & (np.minimum(np.abs(p[:, 2] - up), np.abs(p[:, 2] - low)) <= 1e-9 * size)
+    p, on = _new_on_sections(geo, assembled, lifted)
     panel = (p[:, 1] > 40.0) & (p[:, 1] < 140.0)     # clear of the root (remesh.TAPER)
     assert panel.sum() > 50 and on[panel].mean() > 0.8     # 0.9 (0.25 before)
     ref = union_volume(geo.configuration, n=121, cells=1500)
