@@ -134,7 +134,7 @@ def _corner_width(vertices, side, other):
         cos = u @ v / max(np.linalg.norm(u) * np.linalg.norm(v), 1e-300)
         rest = other[1:] if end == 0 else other[:-1]
         out.append(0.0 if cos > np.cos(np.radians(PINCH)) else
-                   float(_distance(vertices[side[end]][None], vertices[rest])[0]))
+                   float(_distance(c[None], vertices[rest])[0]))
     return out[0], out[1]
 
 
