@@ -28,7 +28,8 @@ def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, mesh=False
     the seam on its chords; 4.8 since it follows the exact curve, juncture.surface.
     seam_curves, a triangle beside it whose corner was lifted part of the way, as next to
     every intersection line). As one patch its triangles were refined across the crease,
-    crossed each other, and the network kept its assembled triangles (down to 0.0075 deg)."""
+    crossed each other, and the network kept its assembled triangles (down to 0.0075 deg;
+    mended since session 35, below)."""
     geo = _geometry("high_wing_one_network_with_the_body.inp")
     assembled = assemble(geo)
     lower = assembled.surfaces.index("wing-body lower")
@@ -53,12 +54,16 @@ def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, mesh=False
 
     assert smallest() >= 4.5
     monkeypatch.setattr(pt, "CREASE", 180.0)
-    assert smallest() < 1.0
+    assert smallest() >= 4.5
 
 
 @pytest.mark.slow  # this airplane meshes in about 10 s (a retry), twice: make test-all
-def test_slow_a_network_charted_across_its_crease_crosses_itself(monkeypatch):
-    """The test above with its meshes: the smallest angle, and the counterfactual."""
+def test_slow_a_network_charted_across_its_crease_meshes_too(monkeypatch):
+    """The test above with its meshes: the smallest angle with the crease a seam, and
+    without it. As one patch the network's triangles were refined across the crease,
+    crossed each other, and the network kept its assembled triangles (down to 0.0075 deg);
+    since session 35 (a second held try where surfaces crossed,
+    `juncture.surface.pipeline._hold`) both cross on the first try and are mended there."""
     test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, mesh=True)
 
 

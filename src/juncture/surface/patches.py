@@ -82,6 +82,7 @@ class Patch:
     undo: tuple | None = None            # dropped points (chart, ids), worst angle before
     xyz: np.ndarray | None = None        # 3-D points of the chart vertices (assembled)
     creases: int = 0                     # inner edges kept (juncture.surface.creases)
+    held: bool = False                   # charted from triangles held where surfaces crossed
 
 
 def patches(mesh, lines=None):

@@ -293,7 +293,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
     if surface.open_loops:
         return surface, None, None
-    keep, held, frozen, local, crossings = set(), None, None, 2, None
+    keep, held, frozen, local, crossings = set(), None, None, HELD_TRIES + 1, None
     tries = (RETRIES if retries is None else retries) + 1
     while tries:
         tries -= 1
@@ -312,11 +312,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
             return better, report, None
         if local and tries and _crossing_only(report):
             # first only where they crossed: re-triangulated unlifted, then kept
-            near, found = _held_near(surface, better, report)
-            if held is None:
-                held, crossings = near, found
-            else:
-                frozen = held | near
+            held, frozen, crossings = _hold(surface, better, report, held, crossings, local)
             local, tries = local - 1, tries + 1
             continue
         more = _troubled_surfaces(better, report) - keep
@@ -325,6 +321,25 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
         keep |= more
         held = frozen = crossings = None
     return surface, None, failures
+
+
+#: Tries in which the triangles near where re-triangulated surfaces crossed are
+#: re-triangulated unlifted (:func:`_hold`) before they keep their assembled triangles.
+HELD_TRIES = 2
+
+
+def _hold(surface, better, report, held, crossings, local):
+    """(held, frozen, crossings) for the try after one whose surfaces crossed: the
+    triangles near the crossing held (:func:`_held_near`), with those held before and the
+    crossings before while a held try is left (``local`` > 1: where a wing's trailing edge
+    passes a few millimetres under a tail cone, the held try crossed again 2 ft aft of the
+    first crossing), then kept as assembled (frozen)."""
+    near, found = _held_near(surface, better, report)
+    if held is None:
+        return near, None, found
+    if local > 1:
+        return held | near, None, np.concatenate([crossings, found])
+    return held, held | near, crossings
 
 
 def _crossing_only(report):
