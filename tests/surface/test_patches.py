@@ -62,7 +62,7 @@ def test_slow_a_network_charted_across_its_crease_meshes_too(monkeypatch):
     """The test above with its meshes: the smallest angle with the crease a seam, and
     without it. As one patch the network's triangles were refined across the crease,
     crossed each other, and the network kept its assembled triangles (down to 0.0075 deg);
-    since session 35 (a second held try where surfaces crossed,
+    since session 35 (held tries that hold the crossings of the tries before,
     `juncture.surface.pipeline._hold`) both cross on the first try and are mended there."""
     test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, mesh=True)
 

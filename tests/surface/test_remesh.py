@@ -758,23 +758,33 @@ def test_a_surface_passing_the_body_on_one_side_is_meshed(deck, fillet):
 
 
 @pytest.mark.slow  # a held-out airplane meshed whole (~6 s): make test-all
-def test_a_patch_whose_seams_split_every_round_is_refined_for_its_shape():
+def test_a_patch_whose_seams_split_every_round_is_refined_for_its_shape(monkeypatch):
     """A generated airplane whose wing has four ordinates (0, 25, 75 and 100 % of the chord;
     tests/data/generated/README.md): the CDT's own refinement split the wing's seams in
     every refining round, so the round ended before the shape check, which ran only in the
     rounds that do not refine, and the wing's triangles stayed flat across its PCHIP nose,
     up to 0.58 ft off it (the volume 0.90 % short of the union's cells). Triangles clear
     of the boundary are now checked in such rounds too, for their distance from the exact
-    surface (0.061 ft, -0.55 %). Oracle: the model's upper surface
+    surface (0.061 ft, -0.54 %), but only until the patch has come to the full check (in
+    every such round, patches checked early split their seams in every later round and
+    never came to the turns again: held-out seed 3636 draw 17's lower fuselage block
+    coarser, 0.06 % of the volume). Oracle: the model's upper surface
     sampled on a grid of span stations and chord fractions, against the mesh interpolated
     there; tests/union_oracle.py."""
     import matplotlib.tri as mtri
 
+    import juncture.surface.remesh as rm
     from tests.union_oracle import union_volume
 
+    calls = []                          # (far only, whether the patch had been checked)
+    deviating = rm.deviating
+    monkeypatch.setattr(rm, "deviating", lambda patch, *a, far_only=False: calls.append(
+        (far_only, patch.checked)) or deviating(patch, *a, far_only=far_only))
     geo = _geo(DATA / "generated" / "remesh"
                / "wing_of_four_ordinates_whose_seams_split_every_round.inp")
     surface = jc.mesh(geo)
+    calls = np.array(calls, bool)
+    assert calls[:, 0].any() and not (calls[:, 0] & calls[:, 1]).any()
     name = np.array(surface.surfaces)[surface.surface]
     v, t = surface.vertices, surface.triangles[name == "wing upper"]
     z = mtri.LinearTriInterpolator(mtri.Triangulation(v[:, 0], v[:, 1], t), v[:, 2])
@@ -784,4 +794,4 @@ def test_a_patch_whose_seams_split_every_round_is_refined_for_its_shape():
     gap = np.abs(exact[:, 2] - z(exact[:, 0], exact[:, 1]))
     assert not np.ma.is_masked(gap) and gap.max() < 0.1            # 0.58 ft before
     cells = union_volume(geo.configuration, n=121, cells=1500)
-    assert abs(surface.volume() / cells - 1.0) < 0.006            # -0.55 % (-0.90 % before)
+    assert abs(surface.volume() / cells - 1.0) < 0.006            # -0.54 % (-0.90 % before)

@@ -13,9 +13,9 @@ with ``edge_length``, its area that of an equilateral triangle of that edge); tr
 cut across a curved surface (centre more than ``tolerance`` off it, the surface turning
 by more than ``turn`` under them, or an edge cutting the exact surface by more than
 ``curvature`` degrees or ``depth`` of its size) get their centre as a new point (in a
-round that adds seam points, those clear of the boundary and more than ``tolerance`` off:
-a patch whose seams split every round came to the check only in the rounds that do not
-refine). New
+round that adds seam points, before the patch has come to this check, those clear of the
+boundary and more than ``tolerance`` off: a patch whose seams split every round came to it
+only in the rounds that do not refine). New
 interior points are taken back onto the patch's triangles, which lie on juncture's networks,
 and lifted onto the exact surface where there is one (:mod:`juncture.surface.lift`).
 
@@ -260,12 +260,15 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         # Seam points were added: triangulate again. Where refinement splits a patch's seams
         # every round, it never came to the shape check below before the rounds that do not
         # refine, and its triangles were left flat across a curved surface (a wing of four
-        # ordinates 0.58 ft off its PCHIP sections over 40 % of its chord); its triangles
-        # clear of the boundary are checked now, for their distance from the surface only
-        # (checked for turns too, triangles near a wing root's leading edge split without
-        # end), and not where surfaces crossed (held: left on the assembled triangles).
+        # ordinates 0.58 ft off its PCHIP sections over 40 % of its chord). Until it has
+        # come to that check its triangles clear of the boundary are checked here, for
+        # their distance from the surface only (for turns too, triangles near a wing root's
+        # leading edge split without end; in every such round, not only until then, patches
+        # checked early split their seams in every later round and never came to the turns:
+        # a fuselage block coarser, 0.06 % of the volume), and not where surfaces crossed
+        # (held: left on the assembled triangles).
         inside = ~boundary[local, 0].any(axis=1)
-        if refine and tol is not None and inside.any() and not patch.held:
+        if refine and tol is not None and inside.any() and not (patch.held or patch.checked):
             _add_points(patch, splits, vertices, deviating(patch, splits, vertices, pts, gid,
                                                            local[inside], tol, shape,
                                                            boundary, far_only=True))
@@ -274,6 +277,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     if worst is not None:
         return worst         # no seam points are added now: triangulate again at once
     far = deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
+    patch.checked |= bool(refine and tol is not None)
     if tol is not False:
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
