@@ -368,9 +368,8 @@ def test_a_fin_standing_partly_on_the_fuselage_partly_on_a_tail_is_refused_by_na
     assert "move fin 1 so that its root lies on one of them" in msg
 
 
-@pytest.mark.slow  # one held-out airplane, eight re-triangulations (~25 s): make test-all
-def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_locally(
-        monkeypatch):
+@pytest.mark.slow  # one held-out airplane, three re-triangulations (~10 s): make test-all
+def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_locally():
     """A low wing whose trailing-edge line passes under the narrowing tail cone
     (tests/data/generated/README.md): the re-triangulated fuselage block and wing surface
     crossed there, and the retry kept both surfaces' network triangles (0.797 of the
@@ -380,14 +379,7 @@ def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_lo
     rows behind the trailing edge start from the body, not from the wing's end point under
     it (session 33, `body_split._beyond_rows`: no web from the body to that point), the
     mended triangles at the wing's root near the trailing edge are thinner: smallest 1.47
-    deg (2.99 before), 62 under 5 deg (4 before), 99.4 % at 20 deg or more. Since session
-    35 (the shape check in rounds that add seam points) the held try crosses again further
-    aft, where the wing's upper surface runs 7 mm under the body's (36, 24, then 7 triangle
-    pairs): each held try holds the crossings before (`pipeline._hold`, HELD_TRIES), and
-    the third has none: 4 under 5 deg, smallest 2.2 deg; with one held try, the triangles
-    there keep their assembled shape (147 under 5 deg)."""
-    import juncture.surface.pipeline as pipeline
-
+    deg (2.99 before), 62 under 5 deg (4 before), 99.4 % at 20 deg or more."""
     deck = DATA / "generated" / "remesh" / "low_wing_trailing_edge_under_a_narrowing_tail_cone.inp"
     geo = _complete(deck)
     with warnings.catch_warnings():
@@ -396,12 +388,7 @@ def test_surfaces_that_cross_where_a_wing_passes_under_a_tail_cone_are_mended_lo
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     angles = smallest_angles(surface.vertices, surface.triangles)
-    assert np.mean(angles >= 20.0) > 0.99 and angles.min() > 1.0 and (angles < 5.0).sum() < 10
-    monkeypatch.setattr(pipeline, "HELD_TRIES", 1)
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", jc.JunctureWarning)
-        surface = jc.mesh(geo)
-    assert (smallest_angles(surface.vertices, surface.triangles) < 5.0).sum() > 100
+    assert np.mean(angles >= 20.0) > 0.99 and angles.min() > 1.0
 
 
 @pytest.mark.slow  # two held-out airplanes meshed three times (~40 s): make test-all
@@ -413,10 +400,9 @@ def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing
     1.7 % short of the union's volume); they are now lifted but within a crossing's reach,
     rising from there at 1 / TAPER. The low wing under a narrowing tail cone still takes that
     path: closed, wound consistently (trimesh), within 0.5 % of the union's cells
-    (tests/union_oracle.py; -0.30 %, -0.27 % since its third held try in session 35), and
-    left unlifted the held points leave it further short (-0.43 %). The canted fin's
-    airplane no longer crosses since session 34 (the lift at a tip of no chord): meshed on
-    the first try, -0.41 % (-0.52 % with the held retry)."""
+    (tests/union_oracle.py; -0.30 %), and left unlifted the held points leave it further short
+    (-0.43 %). The canted fin's airplane no longer crosses since session 34 (the lift at a
+    tip of no chord): meshed on the first try, -0.41 % (-0.52 % with the held retry)."""
     import juncture.surface.patch_roles as patch_roles
     import juncture.surface.pipeline as pipeline
 
@@ -436,7 +422,7 @@ def test_triangles_held_where_surfaces_crossed_are_lifted_away_from_the_crossing
         assert tm.is_watertight and tm.is_winding_consistent
         assert abs(tm.volume / cells - 1.0) < 0.005
         volumes[name] = (len(held), tm.volume / cells - 1.0, geo, cells)
-    assert volumes["low_wing_trailing_edge_under_a_narrowing_tail_cone"][0] == 3
+    assert volumes["low_wing_trailing_edge_under_a_narrowing_tail_cone"][0] == 1
     assert volumes["canted_fin_between_a_low_wing_and_the_tail_cone_top"][0] == 0
     _, kept, geo, cells = volumes["low_wing_trailing_edge_under_a_narrowing_tail_cone"]
     monkeypatch.setattr(patch_roles, "away_from", lambda lift, crossings: None)

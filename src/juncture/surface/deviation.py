@@ -36,8 +36,7 @@ class Shape(NamedTuple):
     depth: float | None       # largest sag of a new edge, share of the exact surface's size
 
 
-def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
-              far_only=False):
+def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
     """Chart centroids of the triangles that cut across the patch's surface: the centroid
     of the flat triangle more than ``tol`` off the surface, the patch triangles under
     its corners and centroid turning by more than ``shape.turn`` (cosine), or, on an exact
@@ -69,8 +68,6 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     # a triangle far smaller than the input triangle under it is not split again (at a
     # crease, where every triangle astride it turns, splitting would not end)
     small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
-    if far_only:
-        return centre[(dev > tol) & ~small]
     return centre[((dev > tol) | turns) & ~small | across | deep]
 
 

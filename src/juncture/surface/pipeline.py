@@ -325,17 +325,17 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
 
 #: Tries in which the triangles near where re-triangulated surfaces crossed are
 #: re-triangulated unlifted (:func:`_hold`), each holding the crossings of the tries before,
-#: before they keep their assembled triangles (a low wing whose trailing edge runs 7 mm under
-#: a tail cone crossed in 36, 24 and 7 triangle pairs, then none).
+#: before they keep their assembled triangles (a wing and fuselage as one network, charted
+#: across the crease at the wing's root, crossed in 14 and 8 triangle pairs, then none).
 HELD_TRIES = 4
 
 
 def _hold(surface, better, report, held, crossings, local):
     """(held, frozen, crossings) for the try after one whose surfaces crossed: the
     triangles near the crossing held (:func:`_held_near`), with those held before and the
-    crossings before while a held try is left (``local`` > 1: where a wing's trailing edge
-    passes a few millimetres under a tail cone, held tries crossed again further aft), then
-    kept as assembled (frozen)."""
+    crossings before while a held try is left (``local`` > 1: a held try can cross again
+    beside the first crossing, where its new points were lifted), then kept as assembled
+    (frozen)."""
     near, found = _held_near(surface, better, report)
     if held is None:
         return near, None, found
