@@ -9,6 +9,7 @@ import pytest
 
 import juncture as jc
 import juncture.surface.patches as pt
+import juncture.surface.pipeline as pipeline
 from juncture.surface.assemble import assemble
 from juncture.surface.pipeline import _line_points
 from juncture.surface.quality import triangle_angles
@@ -53,8 +54,6 @@ def test_a_network_that_turns_at_a_crease_is_two_patches(monkeypatch, mesh=False
         return triangle_angles(surface.vertices, surface.triangles).min()
 
     assert smallest() >= 4.5
-    import juncture.surface.pipeline as pipeline
-
     monkeypatch.setattr(pt, "CREASE", 180.0)
     assert smallest() >= 4.5
     monkeypatch.setattr(pipeline, "HELD_TRIES", 1)
