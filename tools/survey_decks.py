@@ -70,7 +70,8 @@ def option_sets():
 
 
 def draw_decks(n, seed):
-    """``n`` decks from the ``decks()`` strategy, deterministic for ``seed``."""
+    """``n`` decks from the ``decks()`` strategy, deterministic for ``seed`` (whatever else
+    is loaded)."""
     from hypothesis import HealthCheck, Phase, given, settings
     from hypothesis import seed as hseed
 
@@ -85,7 +86,18 @@ def draw_decks(n, seed):
     def collect(example):
         drawn.append(example)
 
-    collect()
+    # hypothesis (>= 6.131) also draws the literals of the local modules loaded at the time:
+    # without this the same seed gave other decks to a script that had imported more of
+    # juncture, or whose code had other constants
+    from hypothesis.internal.conjecture import providers
+
+    local, providers._get_local_constants = providers._get_local_constants, providers.Constants
+    providers.CONSTANTS_CACHE.cache.clear()
+    try:
+        collect()
+    finally:
+        providers._get_local_constants = local
+        providers.CONSTANTS_CACHE.cache.clear()
     return drawn[:n]
 
 
