@@ -320,6 +320,21 @@ def test_slow_a_wing_split_to_its_strips_spacing_without_the_budget_for_it(monke
     test_a_wing_split_to_its_strips_spacing_grades_away_from_it(monkeypatch, slow=True)
 
 
+def centre_fin_airplane():
+    """(completed geometry, fin root and tip leading edges, chords): a centre-line fin
+    with a blunt trailing edge (0.3 % of the chord each side) on the cambered wing-body of
+    tests/support.py, whose fuselage has a pointed nose."""
+    import juncture as jc
+    from juncture.model import WingLike
+    from tests.support import wing_body
+
+    half = np.array([0.0, 1.5, 2.5, 2.6, 1.8, 0.3])          # per cent of the chord
+    le, chord = np.array([[44.0, 0.0, 2.0], [50.0, 0.0, 7.0]]), np.array([9.0, 4.0])
+    fin = WingLike("fin 1", "fin", le, chord, np.array([0.0, 10.0, 30.0, 50.0, 75.0, 100.0]),
+                   np.tile(half, (2, 1)), np.tile(half, (2, 1)), mirrored=False)
+    return jc.complete(wing_body(camber=2.0).with_component(fin)), le, chord
+
+
 @pytest.mark.slow  # one airplane meshed whole (> 5 s): make test-all
 def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
     """A centre-line fin with a blunt trailing edge (0.3 % of the chord each side) on a
@@ -333,15 +348,10 @@ def test_a_centre_fin_s_blunt_trailing_edge_is_capped_to_the_fuselage():
     import trimesh
 
     import juncture as jc
-    from juncture.model import WingLike
     from juncture.surface.quality import triangle_angles
-    from tests.support import wing_body
 
-    half = np.array([0.0, 1.5, 2.5, 2.6, 1.8, 0.3])          # per cent of the chord
-    le, chord = np.array([[44.0, 0.0, 2.0], [50.0, 0.0, 7.0]]), np.array([9.0, 4.0])
-    fin = WingLike("fin 1", "fin", le, chord, np.array([0.0, 10.0, 30.0, 50.0, 75.0, 100.0]),
-                   np.tile(half, (2, 1)), np.tile(half, (2, 1)), mirrored=False)
-    surface = jc.mesh(jc.complete(wing_body(camber=2.0).with_component(fin)))
+    geo, le, chord = centre_fin_airplane()
+    surface = jc.mesh(geo)
     tm = trimesh.Trimesh(surface.vertices, surface.triangles, process=False)
     assert tm.is_watertight and tm.is_winding_consistent
     cap = surface.surfaces.index("fin 1 cap")

@@ -23,6 +23,10 @@ from .patches import area3, taper
 SMALL = 0.05
 #: A sag below this share of the patch's size is not split for curvature (a nose's tip).
 FLOOR = 1e-6
+#: In a round that adds seam points, no new point goes where the input triangle under it is
+#: thinner than this (twice its area under THIN times its longest edge squared): beside a
+#: fuselage's pointed nose, where the chart's triangles are small and thin.
+THIN = 0.1
 #: An edge between two boundary points across a patch whose middle stands off the patch by
 #: more than this share of its length goes through the body (:func:`_chords`).
 CHORD = 0.1
@@ -36,14 +40,16 @@ class Shape(NamedTuple):
     depth: float | None       # largest sag of a new edge, share of the exact surface's size
 
 
-def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
+def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
+              far_only=False):
     """Chart centroids of the triangles that cut across the patch's surface: the centroid
     of the flat triangle more than ``tol`` off the surface, the patch triangles under
     its corners and centroid turning by more than ``shape.turn`` (cosine), or, on an exact
     surface, an edge cutting it too deep (:func:`bent`); with ``tol`` None only
     the triangles with every corner on the boundary that leave the surface (at a narrow
     corner between two seams, the patch across them would make the same triangle); with
-    ``tol`` False none."""
+    ``tol`` False none; ``far_only``: only those more than ``tol`` off, and not over an input
+    triangle thinner than :data:`THIN`."""
     if tol is False or not len(local):
         return np.zeros((0, 2))
     centre = pts[local].mean(axis=1)
@@ -68,6 +74,11 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary):
     # a triangle far smaller than the input triangle under it is not split again (at a
     # crease, where every triangle astride it turns, splitting would not end)
     small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
+    if far_only:
+        corner = vertices[patch.ids[patch.tri[under]]]
+        longest = np.linalg.norm(corner - np.roll(corner, 1, axis=1), axis=2).max(axis=1)
+        thin = 2 * patch.areas[under] < THIN * longest ** 2
+        return centre[(dev > tol) & ~small & ~thin]
     return centre[((dev > tol) | turns) & ~small | across | deep]
 
 

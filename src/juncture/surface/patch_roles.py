@@ -49,7 +49,7 @@ def sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
             if frozen[rows].any():
                 kept.append(rows[frozen[rows]])
             charted += _pieces(mesh, rows[flat[rows] & ~frozen[rows]], kept,
-                               away_from(lift, crossings))
+                               away_from(lift, crossings), held=True)
             charted += _pieces(mesh, rows[~flat[rows] & ~frozen[rows]], kept, lift)
             continue
         if whole.get(twin.get(i)):
@@ -106,9 +106,10 @@ def away_from(lift, crossings):
     return held_lift
 
 
-def _pieces(mesh, rows, kept, lift):
+def _pieces(mesh, rows, kept, lift, held=False):
     """The charts of the connected pieces of the triangle ``rows`` (what a patch leaves
-    around its held triangles); a piece that does not chart is appended to ``kept``."""
+    around its held triangles, or those, ``held``); a piece that does not chart is appended
+    to ``kept``."""
     from .patches import _connected
 
     out = []
@@ -119,7 +120,7 @@ def _pieces(mesh, rows, kept, lift):
         if got is None:
             kept.append(part)
         for patch in got or ():
-            patch.lift = lift
+            patch.lift, patch.held = lift, held
             out.append(patch)
     return out
 

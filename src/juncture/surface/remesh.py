@@ -12,7 +12,10 @@ median edge from another: :mod:`juncture.surface.patches`; seam points:
 with ``edge_length``, its area that of an equilateral triangle of that edge); triangles that
 cut across a curved surface (centre more than ``tolerance`` off it, the surface turning
 by more than ``turn`` under them, or an edge cutting the exact surface by more than
-``curvature`` degrees or ``depth`` of its size) get their centre as a new point. New
+``curvature`` degrees or ``depth`` of its size) get their centre as a new point (in a
+round that adds seam points, before the patch has come to this check, those clear of the
+boundary and more than ``tolerance`` off, but not over thin input triangles: a patch whose
+seams split every round came to it only in the rounds that do not refine). New
 interior points are taken back onto the patch's triangles, which lie on juncture's networks,
 and lifted onto the exact surface where there is one (:mod:`juncture.surface.lift`).
 
@@ -240,35 +243,60 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     pts = tri.vertices_array()
     pts = np.stack([pts["x"], pts["y"]], 1)[SUPER:]
     on_edge = _edge_points(tri, n, cons, parent, uv, pts)
-    for gi, gj, t in on_edge.values():
-        splits.split(gi, gj, t)
+    gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
+    for v, (gi, gj, t) in on_edge.items():
+        gid[v] = splits.split(gi, gj, t)
     splits.settle()
     inner = np.setdiff1d(np.arange(n, len(pts)), np.fromiter(on_edge, int, len(on_edge)))
-    gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     if len(inner):
         gid[inner] = splits.add_vertex(on_surface(patch, vertices, pts[inner])[0])
         patch.extra_uv.append(pts[inner])
         patch.extra_id.append(gid[inner])
-    if on_edge:
-        return False
     local = tri.triangles_array()["vertices"].astype(np.int64) - SUPER
     boundary = np.zeros((len(pts), 2), bool)       # on the boundary, on a free piece
     boundary[cons.ravel(), 0] = True
     boundary[cons[free].ravel(), 1] = True
+    if on_edge:
+        # Seam points were added: triangulate again. Where refinement splits a patch's seams
+        # every round, it never came to the shape check below before the rounds that do not
+        # refine, and its triangles were left flat across a curved surface (a wing of four
+        # ordinates 0.58 ft off its PCHIP sections over 40 % of its chord). Until it has
+        # come to that check its triangles clear of the boundary are checked here, for
+        # their distance from the surface only (for turns too, triangles near a wing root's
+        # leading edge split without end; in every such round, not only until then, patches
+        # checked early split their seams in every later round and never came to the turns:
+        # a fuselage block coarser, 0.06 % of the volume), and not where surfaces crossed
+        # (held: left on the assembled triangles). Nor over thin input triangles
+        # (deviation.THIN): beside a fuselage's pointed nose such points left slivers.
+        inside = ~boundary[local, 0].any(axis=1)
+        if refine and tol is not None and inside.any() and not (patch.held or patch.checked):
+            _add_points(patch, splits, vertices, deviating(patch, splits, vertices, pts, gid,
+                                                           local[inside], tol, shape,
+                                                           boundary, far_only=True))
+        return False
     worst = _drop_flat_apexes(patch, splits, gid, local) if drop and not refine else None
     if worst is not None:
         return worst         # no seam points are added now: triangulate again at once
     far = deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary)
+    patch.checked |= bool(refine and tol is not None)
     if tol is not False:
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
-    if len(far):
-        far, xyz = _new_places(patch, splits, far, on_surface(patch, vertices, far)[0])
-    if len(far):
-        patch.extra_uv.append(far)
-        patch.extra_id.append(splits.add_vertex(xyz))
+    if _add_points(patch, splits, vertices, far):
         return False
     patch.out, patch.pts, patch.local = gid[local], pts, local
+    return True
+
+
+def _add_points(patch, splits, vertices, far):
+    """Add the chart points ``far`` to the patch as interior points (but those on a vertex
+    or on one another, :func:`_new_places`); whether any was added."""
+    if len(far):
+        far, xyz = _new_places(patch, splits, far, on_surface(patch, vertices, far)[0])
+    if not len(far):
+        return False
+    patch.extra_uv.append(far)
+    patch.extra_id.append(splits.add_vertex(xyz))
     return True
 
 

@@ -52,12 +52,14 @@ class Splits:
         return ids
 
     def split(self, a, b, t):
+        """The id of the point at fraction t from a on edge (a, b), made (with its mirror
+        image) if new."""
         new = self._split(a, b, t)
         if self.mirror is None:
-            return
+            return new
         ma, mb = int(self.mirror[a]), int(self.mirror[b])
         if ma < 0 or mb < 0:
-            return
+            return new
         if (ma, mb) == (a, b):          # an edge in the plane: the point is its own image
             self.mirror[new] = new
         elif (ma, mb) == (b, a):        # an edge across the plane: the point at 1 - t
@@ -66,6 +68,7 @@ class Splits:
         elif (min(ma, mb), max(ma, mb)) in self.edges:
             other = self._split(ma, mb, t)
             self.mirror[new], self.mirror[other] = other, new
+        return new
 
     def _split(self, a, b, t):
         """The id of the point at fraction t from a on edge (a, b), made if new."""
