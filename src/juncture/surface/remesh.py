@@ -38,6 +38,7 @@ import numpy as np
 
 from .deviation import Shape, chords, deviating, on_surface
 from .mirror import copy_triangles, mirror_map, symmetrise
+from .outside import outside_splits
 from .patch_roles import TAPER, sorted_patches  # noqa: F401  (TAPER: remesh.TAPER)
 from .patches import SHORTEST, SUPER
 from .splits import Splits, fans, seam_lift
@@ -217,7 +218,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     import pythoncdt as cdt
 
     uv, ids, cons, parent, free = _inputs(patch, splits)
-    n = len(uv)
+    n, shortest = len(uv), 0.0
     tri = cdt.Triangulation(cdt.VertexInsertionOrder.AUTO,
                             cdt.IntersectingConstraintEdges.NOT_ALLOWED, 0.0)
     try:
@@ -274,6 +275,14 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
                                                            local[inside], tol, shape,
                                                            boundary, far_only=True))
         return False
+    # pieces beyond thin triangles' circumcentres are split, and the round goes on to the
+    # shape check (returning to triangulate again, the patch came to it less often: 5 %
+    # fewer triangles, its volume further from the union's)
+    more = outside_splits(pts, local, cons, parent, min_angle, shortest) if refine else ()
+    for gi, gj, t in more:
+        splits.split(gi, gj, t)
+    if more:
+        splits.settle()
     worst = _drop_flat_apexes(patch, splits, gid, local) if drop and not refine else None
     if worst is not None:
         return worst         # no seam points are added now: triangulate again at once
@@ -282,7 +291,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     if tol is not False:
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
-    if _add_points(patch, splits, vertices, far):
+    if _add_points(patch, splits, vertices, far) or more:
         return False
     patch.out, patch.pts, patch.local = gid[local], pts, local
     return True
