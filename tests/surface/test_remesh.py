@@ -270,6 +270,9 @@ def test_surfaces_that_share_a_triangle_when_re_triangulated_keep_their_own(monk
     assert check_mesh(*_arrays(remesh(assembled))).ok
     monkeypatch.setattr(deviation, "CHORD", np.inf)
     monkeypatch.setattr(rm, "_split_shared_chords", lambda *args: None)
+    # since session 36 the pieces beyond thin triangles' circumcentres are split as well
+    # (juncture.surface.outside), which also keeps the two surfaces' triangles apart
+    monkeypatch.setattr(rm, "outside_splits", lambda *args: ())
     first = remesh(assembled)
     assert check_mesh(first.vertices, first.triangles).nonmanifold_edges > 0
     _kept_where_needed(assembled)
@@ -565,11 +568,14 @@ def test_a_dropped_point_that_leaves_worse_triangles_is_put_back():
 def test_slow_every_drop_kept_leaves_the_worse_cavity(monkeypatch):
     """The counterfactual of the test above: with every drop kept (the patch's worst
     angle never compared), the 3.1 deg triangle is back, on the surface it was found on
-    (seams on their chords: followed to the exact curve, the nose's triangles differ)."""
+    (seams on their chords: followed to the exact curve, the nose's triangles differ; no
+    pieces split beyond thin triangles' circumcentres, juncture.surface.outside, which
+    leaves no cavity that bad either)."""
     import juncture.surface.remesh as rm
     import juncture.surface.seam_curves as sc
 
     monkeypatch.setattr(rm, "_worst", lambda *args: 180.0)
+    monkeypatch.setattr(rm, "outside_splits", lambda *args: ())
     monkeypatch.setattr(sc, "seam_curves", lambda geometry, mesh: None)
     surface = jc.mesh(_geo(PYRAMID_NOSE))
     assert triangle_angles(surface.vertices, surface.triangles).min() < 5.0
@@ -811,8 +817,11 @@ def test_no_point_is_added_over_a_pointed_nose_s_thin_triangles_in_a_seam_round(
     put there left slivers (session 35: a wing-body with a centre fin, 8 triangles under
     5 deg, all within 0.25 ft of the nose). No point goes over an input triangle thinner
     than deviation.THIN (twice its area under THIN times its longest edge squared). Oracle:
-    the triangles' corner angles, and where they are; the counterfactual sets THIN to 0."""
+    the triangles' corner angles, and where they are; the counterfactual sets THIN to 0 and
+    leaves the pieces beyond thin triangles' circumcentres whole (juncture.surface.outside,
+    session 36: splitting them clears those slivers too)."""
     import juncture.surface.deviation as dv
+    import juncture.surface.remesh as rm
     from tests.surface.test_strips import centre_fin_airplane
 
     geo = centre_fin_airplane()[0]
@@ -826,6 +835,7 @@ def test_no_point_is_added_over_a_pointed_nose_s_thin_triangles_in_a_seam_round(
     count, smallest = nose_slivers()
     assert count == 0 and smallest >= 5.0
     monkeypatch.setattr(dv, "THIN", 0.0)
+    monkeypatch.setattr(rm, "outside_splits", lambda *args: ())
     assert nose_slivers()[0] > 0
 
 
