@@ -13,16 +13,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from .quality import triangle_angles
+
 __all__ = ["outside_splits"]
-
-
-def _smallest_angles(p):
-    """(k,) smallest corner angle [rad] of the chart triangles ``p`` (k, 3, 2)."""
-    e = np.roll(p, -1, axis=1) - p                       # edge i: corner i -> corner i + 1
-    f = -np.roll(e, 1, axis=1)                           # corner i -> corner i - 1
-    cos = (e * f).sum(axis=2) / np.maximum(
-        np.linalg.norm(e, axis=2) * np.linalg.norm(f, axis=2), 1e-300)
-    return np.arccos(np.clip(cos, -1.0, 1.0)).min(axis=1)
 
 
 def _circumcentres(p):
@@ -59,7 +52,7 @@ def outside_splits(pts, local, cons, parent, min_angle, shortest):
     ``min_angle`` [deg] lies beyond, seen from the triangle's centre; pieces shorter than
     twice ``shortest`` are not split (refinement makes no shorter edge)."""
     p = pts[local]
-    bad = np.flatnonzero(_smallest_angles(p) < np.radians(min_angle))
+    bad = np.flatnonzero(triangle_angles(pts, local).min(axis=1) < min_angle)
     if not len(bad) or not len(cons):
         return []
     centre, cc = p[bad].mean(axis=1), _circumcentres(p[bad])
