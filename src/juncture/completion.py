@@ -303,6 +303,31 @@ def _net_stations(body, body0, upper, lower):
     return np.sort(np.concatenate([given, added[(added < lo) | (added > hi)]]), kind="stable")
 
 
+def _turns_back(*lines):
+    """Whether a fillet start line (the intersection line without a fillet) runs forward
+    anywhere from its leading-edge point to its trailing-edge point (a high swept wing's
+    upper line bulging forward and up ahead of the leading-edge point). TM-4406's 4 and 6
+    blocks cannot follow it: the juncture blocks' body arcs lie at each line's own station,
+    so the arcs of a run that turns back fold over the next ones, and the forward block,
+    ending at the leading-edge station, covers the body under them too. The fuselage split
+    by theta_b bounds its blocks by such a run instead
+    (:func:`juncture.surface.body_split.footprint_chains`)."""
+    return any(bool(np.any(np.diff(line.start[:, 0]) < 0.0)) for line in lines)
+
+
+def _warn_folds(wing, body, layout, log):
+    """Warn (and log) that the asked-for 4 or 6 blocks fold where a start line turns back."""
+    import warnings
+
+    from .errors import JunctureWarning
+
+    msg = (f"{wing.name}/{body.name}: an intersection line runs forward of its leading-edge "
+           f"point; the {layout}-block layout's juncture rows fold there (the surface crosses "
+           "itself): use blocks='split' (--blocks split), the default for such a wing")
+    log.append(msg)
+    warnings.warn(msg, JunctureWarning, stacklevel=3)
+
+
 def _split_layout(body, wing, fu, fl, attached, n_half, log, stations=None):
     """TM-4607 output: fuselage upper/lower split by theta_b, wing networks, seams."""
     from .surface.body_split import boundary_from_points, seam_gap, split_body
@@ -586,7 +611,9 @@ def complete(cfg: Configuration, fillet: FilletKind | None = None, keep_area=Fal
     net_stations = _net_stations(body, body0, fu, fl)
     layout = opts.blocks
     if layout is None:
-        layout = "split" if attached else 4
+        layout = "split" if attached or _turns_back(fu, fl) else 4
+    elif layout != "split" and not opts.single_network and _turns_back(fu, fl):
+        _warn_folds(wing, body, layout, log)
     lower_points = il.points
     if opts.single_network:
         from .single_network import reinterpolated, single_network

@@ -151,7 +151,8 @@ class CompleteOptions:
         Output layout: TM-4406's 4 or 6 blocks, or TM-4607's fuselage upper and lower
         surfaces split by theta_b(x) through the canard, wing and tail regions (starting at a
         centre-line fin's intersection). None: "split" when components other than the wing
-        touch the fuselage, else 4.
+        touch the fuselage or a fillet start line of the wing turns back in x (the juncture
+        blocks' arcs would fold), else 4.
     single_network : bool
         Fuselage as one network with the lower intersection re-interpolated at the upper
         points' x (TM-4406 fig 4) and points redistributed around the wing (fig 5).

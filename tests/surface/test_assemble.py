@@ -337,3 +337,40 @@ def test_a_gap_between_two_blocks_is_filled_from_one_side_only():
     mesh = assemble(geo)
     report = check_mesh(mesh.vertices, mesh.triangles)
     assert report.ok, report.failures()
+
+
+@pytest.mark.parametrize("deck, layout", [
+    ("high_swept_wing_upper_line_ahead_of_its_leading_edge", 4),
+    ("high_wing_upper_line_running_aft_before_it_turns_forward", None)])
+def test_a_root_line_that_turns_back_is_bounded_by_the_split_layout(deck, layout):
+    """Generated airplanes (tests/data/generated/README.md, held out in session 37) whose
+    wing's upper intersection line runs forward of its leading-edge point before it turns
+    aft. (1) A wing-body with no other component on the fuselage, whose default was the
+    4-block layout: its juncture blocks' rows lie at each line point's own station, so the
+    band between the leading edge (x 68.46) and the point ahead of it (68.18) folded over the
+    next, and the forward block, ending at the leading edge, covered the body under them
+    (34 crossing pairs). The default is now the split layout wherever a start line turns
+    back in x; the counterfactual (``blocks=4``, asked for) still crosses, with a warning.
+    (2) An upper line that runs aft by 0.05 ft from the leading edge before it turns
+    forward over the fuselage's top: the split layout's chains refused such a wiggle and
+    fell back to each line alone (an open loop, the upper block under the wing); now the
+    point that turns back stays on the wing's root line. Oracle: the exact-predicate check
+    of the assembled surface."""
+    import warnings
+
+    import juncture as jc
+    from juncture.surface.check import check_mesh
+    from tests.support import DATA
+
+    cfg = jc.read(DATA / "generated" / "assembly" / f"{deck}.inp")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(cfg)
+    assert "body upper" in geo.networks and "body wing-body upper" not in geo.networks
+    mesh = assemble(geo)
+    report = check_mesh(mesh.vertices, mesh.triangles)
+    assert report.ok, report.failures()
+    if layout is not None:
+        with pytest.warns(jc.JunctureWarning, match="fold there"):
+            folded = assemble(jc.complete(cfg, blocks=layout))
+        assert not check_mesh(folded.vertices, folded.triangles).ok

@@ -181,8 +181,7 @@ def test_a_line_turning_back_at_the_leading_edge_bounds_the_other_block_there():
 
 def test_lines_that_run_aft_or_both_turn_back_have_no_chains():
     """Lines that run aft from the leading edge keep the blocks as they were
-    (body_split.forward); two lines that both turn back, or a chain that would not run aft,
-    are left to it too."""
+    (body_split.forward); two lines that both turn back are left to it too."""
     from juncture.surface.body_split import footprint_chains
 
     le = [10.0, 3.0, 0.0]
@@ -190,9 +189,27 @@ def test_lines_that_run_aft_or_both_turn_back_have_no_chains():
     back = np.array([le, [9.0, 2.5, 1.0], [15.0, 2.0, 1.5]])
     assert footprint_chains(aft, aft * [1, 1, -1]) is None
     assert footprint_chains(back, back * [1, 1, -1]) is None
-    # The upper line turns back, the lower one wiggles: no chain runs aft.
+
+
+def test_points_of_a_chain_that_turn_back_are_left_out():
+    """A run that wiggles keeps the points that run aft (as body_split.forward does), and
+    the forward run keeps the leading-edge point the lines share: an upper line that runs
+    aft by 0.05 ft from the leading-edge point before it turns forward (a high wing whose
+    upper lines pass over the fuselage, continued to the plane of symmetry ahead of the
+    leading edge: they were left to forward(), the loop between the wing and the fuselage
+    open and the upper block under the wing)."""
+    from juncture.surface.body_split import footprint_chains
+
+    le = [10.0, 3.0, 0.0]
+    back = np.array([le, [9.0, 2.5, 1.0], [15.0, 2.0, 1.5]])
     wiggle = np.array([le, [12.0, 3.0, -1.0], [11.0, 3.0, -1.2], [15.0, 2.0, -1.5]])
-    assert footprint_chains(back, wiggle) is None
+    assert footprint_chains(back, wiggle) == ([(0, 1), (0, 2)],
+                                              [(0, 1), (0, 0), (1, 1), (1, 3)])
+    upper = np.array([le, [10.05, 2.8, 0.4], [9.5, 2.0, 1.0], [4.0, 0.0, 1.5],
+                      [15.0, 0.0, 1.5]])
+    lower = np.array([le, [12.0, 3.0, -1.0], [15.0, 2.0, -1.5]])
+    assert footprint_chains(upper, lower) == ([(0, 3), (0, 4)],
+                                              [(0, 3), (0, 2), (0, 0), (1, 1), (1, 2)])
 
 
 def test_a_line_running_aft_of_the_trailing_edge_bounds_the_other_block_after_it():

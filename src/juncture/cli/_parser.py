@@ -144,7 +144,8 @@ def _complete_parser(sub, common, extensions):
                    f"{', '.join(extensions)}")
     s.add_argument("--blocks", type=_blocks, metavar="{4,6,split}",
                    help="output layout: TM-4406's 4 or 6 blocks, or TM-4607's fuselage split by "
-                   "theta_b (default: split when other components touch the fuselage, else 4)")
+                   "theta_b (default: split when other components touch the fuselage or the wing's "
+                   "root line turns back in x, else 4)")
     s.add_argument("--single-network", action="store_true", default=None,
                    help="fuselage as one network (TM-4406 figs 4-5)")
     s.add_argument("--theta-u", type=_float("theta_u_deg", "an angle in (0, 90) [deg]"),

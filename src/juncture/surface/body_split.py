@@ -104,18 +104,26 @@ def forward(x):
 
 
 def _runs(x):
-    """(ks, ke) of a line whose points 0..ks run forward (x falling) to its foremost point,
-    ks..ke aft and ke..end forward again (ks = 0, ke = last where it only runs aft), or
-    None (a wiggle, NaN)."""
+    """(ks, ke) of a line whose points 0..ks run forward to its foremost point ks, ks..ke
+    aft to its aftmost point ke and ke..end forward again (ks = 0, ke = last where it only
+    runs aft), or None (NaN, or the aftmost point ahead of the foremost). A run may wiggle:
+    :func:`_aft` leaves out its points that turn back."""
     if x.size < 2 or not np.all(np.isfinite(x)):
         return None
     ks, ke = int(np.argmin(x)), int(np.argmax(x))
-    if ks >= ke:
-        return None
-    d = np.diff(x)
-    if np.all(d[:ks] < 0.0) and np.all(d[ks:ke] > 0.0) and np.all(d[ke:] < 0.0):
-        return ks, ke
-    return None
+    return (ks, ke) if ks < ke else None
+
+
+def _aft(line, side, idx, keep_last=False):
+    """The (side, index) pairs of a run of ``line``'s points ``idx`` (taken aft) whose x
+    lies beyond every earlier one's (:func:`forward`), or with ``keep_last`` below every
+    later one's, so that the run's last point (the leading-edge point the two lines share)
+    stays: a point that turns back (a line running aft by 0.05 ft from its leading-edge
+    point before it turns forward) stays on the wing's root line only, and the small loop
+    it leaves between the wing and the fuselage is capped."""
+    x = line[idx, 0]
+    keep = forward(-x[::-1])[::-1] if keep_last else forward(x)
+    return [(side, int(i)) for i in np.asarray(idx)[keep]]
 
 
 def footprint_chains(upper, lower):
@@ -145,13 +153,13 @@ def footprint_chains(upper, lower):
     for s in (0, 1):
         o = 1 - s
         ks, ke = runs[s]
-        chain = [(s, i) for i in range(ks, ke + 1)]
+        chain = _aft(lines[s], s, np.arange(ks, ke + 1))
         if ahead[o]:   # the other line's forward run, aft to the shared leading edge
             if np.array_equal(lines[o][0], lines[s][0]):
                 chain = chain[1:]
-            chain = [(o, i) for i in range(runs[o][0], -1, -1)] + chain
+            chain = _aft(lines[o], o, np.arange(runs[o][0], -1, -1), keep_last=True) + chain
         if behind[o]:  # from the shared trailing edge, the other line's aft run taken aft
-            run = [(o, i) for i in range(last[o], runs[o][1] - 1, -1)]
+            run = _aft(lines[o], o, np.arange(last[o], runs[o][1] - 1, -1))
             if np.array_equal(lines[o][-1], lines[s][-1]):
                 run = run[1:]
             chain = chain + run
