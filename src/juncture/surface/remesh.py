@@ -26,10 +26,12 @@ may go down to half that piece, so the surface beside it grades down instead of 
 
 Refinement splits boundary edges that new points would encroach. A split point is made once,
 on the 3-D edge at the same fraction, and every patch that has the edge (the neighbour across
-a seam, the other side of a cut) takes it in the next round. The last rounds of ``ROUNDS``
-do not refine (they add no seam points), and a patch that cannot be charted keeps its
-triangles and takes split points as fans. So the seams stay bit-identical and the surface
-closed, by construction.
+a seam, the other side of a cut) takes it in the next round. The rounds after the refining
+ones (``ROUNDS`` - ``REFINING``) do not refine: for the triangles under ``SETTLE`` degrees
+the first ``SPLITTING`` split only the pieces their circumcentres encroach (Ruppert's rule),
+the others add only the circumcentres inside (no seam points), the last none; a patch
+that cannot be charted keeps its triangles and takes split points as fans. So the seams
+stay bit-identical and the surface closed, by construction.
 """
 
 from __future__ import annotations
@@ -38,7 +40,7 @@ import numpy as np
 
 from .deviation import Shape, chords, deviating, on_surface
 from .mirror import copy_triangles, mirror_map, symmetrise
-from .outside import outside_splits
+from .outside import interior_points, outside_splits
 from .patch_roles import TAPER, sorted_patches  # noqa: F401  (TAPER: remesh.TAPER)
 from .patches import SHORTEST, SUPER
 from .splits import Splits, fans, seam_lift
@@ -49,8 +51,19 @@ __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 MIN_ANGLE = 25.0
 #: Triangulate a patch with a mirror image once and copy it (:mod:`juncture.surface.mirror`).
 MIRROR = True
-#: Triangulation rounds; the last three do not refine (no new seam points).
-ROUNDS = 12
+#: Triangulation rounds: REFINING rounds of PythonCDT's refinement, then rounds that settle
+#: the triangles left under SETTLE deg (seams split in the last refining rounds fan their
+#: neighbours): SPLITTING of them split the pieces that such triangles' circumcentres
+#: encroach or lie beyond (:func:`~juncture.surface.outside.outside_splits`), and all but
+#: the last add the circumcentres that encroach none
+#: (:func:`~juncture.surface.outside.interior_points`); the last takes what it gets. (At
+#: ``min_angle`` instead of SETTLE they re-triangulated three times the patches, the
+#: transport's re-triangulation took 19 % longer, and more seam splits near sharp corners
+#: of the charts left more slivers there than they mended.)
+ROUNDS = 14
+REFINING = 9
+SPLITTING = 2
+SETTLE = 10.0
 #: Default largest distance of a triangle's centre from the surface, share of the size.
 TOLERANCE = 1e-4
 #: Default largest turn [deg] of the surface under one new triangle.
@@ -159,7 +172,7 @@ def _known(patch, splits):
     return splits.count(_keys(patch))
 
 
-def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
+def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape, split=False):
     """:func:`_triangulate_once`, again while it drops flat triangles' points; where the
     triangles without them are worse in 3-D than the ones that had them (the cavity a point
     leaves is triangulated afresh: a point dropped near a pyramid nose left a triangle of
@@ -169,7 +182,7 @@ def _triangulate(patch, splits, vertices, refine, min_angle, area, tol, shape):
     while True:
         before = patch.extra_uv, patch.extra_id
         got = _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape,
-                                drop)
+                                drop, split)
         if isinstance(got, float):              # dropped: the worst angle it had
             uv, ids = np.concatenate(before[0]), np.concatenate(before[1])
             gone = ~np.isin(ids, np.concatenate(patch.extra_id))
@@ -205,7 +218,7 @@ def _budget(patch, n):
 
 
 def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, shape,
-                      drop=True):
+                      drop=True, split=False):
     """One constrained (and, with ``refine``, refined) triangulation of a patch's chart.
 
     New interior points are kept with the patch; new points on boundary pieces are
@@ -226,10 +239,10 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         tri.insert_edges(cons)
         outer = tri.collect_outer_triangles() if patch.creases else \
             tri.collect_outer_triangles_and_holes()
+        piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
+        shortest = max(patch.shortest * FINEST / SHORTEST,
+                       min(patch.shortest, PIECE * float(piece)))
         if refine:
-            piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
-            shortest = max(patch.shortest * FINEST / SHORTEST,
-                           min(patch.shortest, PIECE * float(piece)))
             budget = _budget(patch, n)
             if area is not None:
                 tri.refine_triangles(budget, cdt.RefinementCriterion.LARGEST_AREA, area,
@@ -275,10 +288,12 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
                                                            local[inside], tol, shape,
                                                            boundary, far_only=True))
         return False
-    # pieces beyond thin triangles' circumcentres are split, and the round goes on to the
-    # shape check (returning to triangulate again, the patch came to it less often: 5 %
-    # fewer triangles, its volume further from the union's)
-    more = outside_splits(pts, local, cons, parent, min_angle, shortest) if refine else ()
+    # pieces beyond thin triangles' circumcentres (in the settling rounds also the pieces
+    # they encroach) are split, and the round goes on to the shape check (returning to
+    # triangulate again, the patch came to it less often: 5 % fewer triangles, its volume
+    # further from the union's)
+    more = outside_splits(pts, local, cons, parent, min_angle if refine else
+                          min(min_angle, SETTLE), shortest, split) if refine or split else ()
     for gi, gj, t in more:
         splits.split(gi, gj, t)
     if more:
@@ -291,6 +306,9 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     if tol is not False:
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
+    if not refine and tol is None:
+        far = np.concatenate([far, interior_points(pts, local, cons, min(min_angle, SETTLE),
+                                                   shortest)])
     if _add_points(patch, splits, vertices, far) or more:
         return False
     patch.out, patch.pts, patch.local = gid[local], pts, local
@@ -458,17 +476,18 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     shape = Shape(np.cos(np.radians(turn)), None if curvature is None else
                    np.radians(curvature), depth)
     for rnd in range(ROUNDS):
-        # refine and split for shape; then only points inside (no seam points), the last
-        # round taking what it gets
-        refine = rnd < ROUNDS - 3
+        # refine and split for shape; then split the pieces thin triangles encroach, then
+        # only points inside (no seam points), the last round taking what it gets
+        refine = rnd < REFINING
         rule = tol if refine else (None if rnd < ROUNDS - 1 else False)
+        split = REFINING <= rnd < REFINING + SPLITTING
         for patch in charted:
             known = _known(patch, splits)
             if patch.out is not None and patch.seen == known:
                 continue
             area = _area(patch, mesh.vertices, edge_length)
             done = _triangulate(patch, splits, mesh.vertices, refine, min_angle, area, rule,
-                                shape)
+                                shape, split)
             if done is None:
                 raise GeometryError(f"the chart of {mesh.surfaces[patch.surface]} could "
                                     "not be triangulated")
