@@ -41,6 +41,9 @@ THIN = 0.02
 #: of its normal's angle to the axis above this): near a leading edge the move would be
 #: along the surface and would distort the triangles.
 WING_FACING = 0.5
+#: A point lies within the chord where its fraction is in [0, 1] to this: a trailing edge's
+#: point, le + chord, comes out of the division at 1 + 2e-16 (and its triangles went unlifted).
+ROUND = 1e-12
 
 
 def _normals(triangles):
@@ -219,7 +222,7 @@ def _chordwise(wing, p):
     le, te = edges_x(wing, s)
     f = (p[:, 0] - le) / np.where(te > le, te - le, 1.0)
     inside = (p[:, wing.span_axis] >= lo) & (p[:, wing.span_axis] <= hi) & (te > le)
-    return s, np.clip(f, 0.0, 1.0), inside & (f >= 0.0) & (f <= 1.0)
+    return s, np.clip(f, 0.0, 1.0), inside & (f >= -ROUND) & (f <= 1.0 + ROUND)
 
 
 def _thickness(wing, p):
