@@ -10,9 +10,9 @@ re-triangulation splits them (:func:`juncture.surface.remesh._triangulate_once`)
 
 After the refining rounds (:data:`juncture.surface.remesh.REFINING`), seams split in the
 last of them fan the patches beside them. Those rounds do Ruppert's refinement in two
-parts: first the pieces that thin triangles' circumcentres encroach (``encroached``), whose
-split points the neighbours take, then :func:`interior_points`, the circumcentres that
-encroach no piece, which split nothing on a seam.
+parts: :func:`interior_points`, the circumcentres that encroach no piece, which split
+nothing on a seam, and, in the first two of them only, the pieces the other circumcentres
+encroach (``encroached``), whose split points the neighbours take in the next round.
 """
 
 from __future__ import annotations

@@ -28,9 +28,10 @@ Refinement splits boundary edges that new points would encroach. A split point i
 on the 3-D edge at the same fraction, and every patch that has the edge (the neighbour across
 a seam, the other side of a cut) takes it in the next round. The rounds after the refining
 ones (``ROUNDS`` - ``REFINING``) do not refine: for the triangles under ``SETTLE`` degrees
-the first ``SPLITTING`` split only the pieces their circumcentres encroach (Ruppert's rule),
-the others add only the circumcentres inside (no seam points), the last none; a patch
-that cannot be charted keeps its triangles and takes split points as fans. So the seams
+all but the last add the circumcentres that lie inside and encroach no boundary piece (no
+seam points), the first ``SPLITTING`` of them also split the pieces the others encroach
+(Ruppert's rule), the last adds none; a patch that cannot be charted keeps its triangles
+and takes split points as fans. So the seams
 stay bit-identical and the surface closed, by construction.
 """
 
