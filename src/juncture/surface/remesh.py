@@ -20,7 +20,8 @@ interior points are taken back onto the patch's triangles, which lie on juncture
 and lifted onto the exact surface where there is one (:mod:`juncture.surface.lift`).
 
 A thin cap (a blunt trailing edge's strip) is not charted: its sides are split to a few
-times its width and it is zipped again at the end (:mod:`juncture.surface.strips`). Next to
+times its width and it is zipped again at the end (:mod:`juncture.surface.strips`), with
+points inside where the zip leaves slivers (:mod:`juncture.surface.strip_fill`). Next to
 a boundary piece shorter than the chart's usual shortest edge (such a split side), refinement
 may go down to half that piece, so the surface beside it grades down instead of fanning.
 
@@ -466,7 +467,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     """
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
-    from .strips import zipped
+    from .strips import zipped_all
 
     splits = _splits(mesh, lift)
     size = float(np.ptp(mesh.vertices, axis=0).max())
@@ -506,7 +507,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     pieces = [(fans(mesh.triangles[rows], splits), rows) for rows in kept]
     pieces += [(np.concatenate([copy_triangles(p, splits) for p in primary]), rows)
                for rows, primary in copied]
-    pieces += [(zipped(thin, splits), thin.rows) for thin in strips]
+    pieces += zipped_all(strips, splits, min_angle)
     for t, rows in pieces:
         tris.append(t)
         comp.append(np.full(len(t), mesh.component[rows[0]]))

@@ -11,7 +11,9 @@ pieces of at most :func:`spacing` times its width there (shared with the wing su
 across them, which refine to that spacing), and at the end it is zipped again over every
 point on its sides. A zipped triangle of width h and base b has a smallest angle of about
 atan(h / b): the spacing follows the smallest angle asked of the charts (20 deg at b = 2.7 h
-for the default 25).
+for the default 25). Where a neighbour's refinement put one side's points much closer
+together than the strip is wide, the zip fans them from the other side's long piece; that
+stretch takes points inside (:func:`zipped`, :mod:`juncture.surface.strip_fill`).
 """
 
 from __future__ import annotations
@@ -21,8 +23,10 @@ from typing import NamedTuple
 import numpy as np
 
 from .assemble import boundary_loops, equal_run, strip_chains, zip_strip
+from .quality import triangle_angles
 
-__all__ = ["Strip", "strip", "tip_and_strip", "presplit", "zipped", "spacing", "STRIP", "MOST"]
+__all__ = ["Strip", "strip", "tip_and_strip", "presplit", "zipped", "zipped_all", "spacing",
+           "STRIP", "MOST", "FILL"]
 
 #: A cap patch is a strip when its area is below this share of a circle's of its boundary's
 #: length (a rectangle narrower than about STRIP / pi of its length).
@@ -37,6 +41,8 @@ NARROWEST = 0.1
 #: A strip pinches at a corner its sides leave within this angle [deg] of one another.
 PINCH = 20.0
 MOST = 4000
+#: A zipped strip with a triangle under this [deg] takes points inside.
+FILL = 10.0
 
 
 class Strip(NamedTuple):
@@ -163,6 +169,24 @@ def _graded(length, w0, w1, most):
     return t if w0 <= w1 else (1.0 - t)[::-1]
 
 
+def _filled(tri, vertices, min_angle):
+    """(triangles, new points): the zip ``tri`` with each stretch around triangles under
+    :data:`FILL` deg taken again with points inside where that mends it
+    (:func:`juncture.surface.strip_fill.filled`), the new points numbered from
+    ``len(vertices)``."""
+    from .strip_fill import filled, windows
+
+    parts, new, last = [], [np.zeros((0, 3))], 0
+    for lo, hi in windows(triangle_angles(vertices, tri).min(axis=1), FILL):
+        got = filled(np.concatenate([vertices] + new), tri[lo:hi + 1], min_angle)
+        if got is None:
+            continue
+        new.append(got[0])
+        parts += [tri[last:lo], got[1]]
+        last = hi + 1
+    return (np.concatenate(parts + [tri[last:]]) if parts else tri), np.concatenate(new)
+
+
 def _with_points(side, splits):
     out = [side[:1]]
     for i, j in zip(side[:-1].tolist(), side[1:].tolist()):
@@ -170,10 +194,65 @@ def _with_points(side, splits):
     return np.concatenate(out).astype(np.int64)
 
 
-def zipped(s, splits):
-    """The strip's triangles over every point now on its sides, oriented as it was."""
+def zipped_all(strips, splits, min_angle=None):
+    """[(triangles, rows)] of every strip (:func:`zipped`); of a strip and its mirror image
+    in y = 0 (another of them), the one whose triangles are better (:func:`_score`: the
+    two are zipped from opposite ends) is kept and copied as the other
+    (:func:`juncture.surface.mirror.copy_triangles`: the points filled inside it get their
+    images), so the two halves stay each other's images."""
+    from types import SimpleNamespace
+
+    from .mirror import copy_triangles
+
+    m = splits.mirror
+    keys = [frozenset(np.concatenate([s.a, s.b]).tolist()) for s in strips]
+    where = {k: i for i, k in enumerate(keys)}
+    out = [None] * len(strips)
+    for i, s in enumerate(strips):
+        if out[i] is not None:
+            continue
+        ids = np.array(sorted(keys[i]))
+        j = None if m is None or np.any(m[ids] < 0) else \
+            where.get(frozenset(m[ids].tolist()))
+        if j is None or j == i or out[j] is not None:
+            out[i] = _kept(zipped(s, splits, min_angle), splits)
+            continue
+        got = [zipped(s, splits, min_angle), zipped(strips[j], splits, min_angle)]
+        v = splits.all()
+        first = 0 if _score(v, *got[0]) >= _score(v, *got[1]) else 1
+        k, other = (i, j) if first == 0 else (j, i)
+        out[k] = _kept(got[first], splits)
+        tri = copy_triangles(SimpleNamespace(out=out[k]), splits)
+        flip = _area_vectors(splits.all()[tri]).sum(axis=0) @ strips[other].normal < 0.0
+        out[other] = tri[:, ::-1] if flip else tri
+    return [(t, s.rows) for t, s in zip(out, strips)]
+
+
+def _kept(got, splits):
+    """The triangles of a strip's (triangles, new points), the points added to ``splits``
+    (numbered so from its end)."""
+    splits.add_vertex(got[1])
+    return got[0]
+
+
+def _score(vertices, tri, new):
+    """:func:`juncture.surface.strip_fill.score` of a strip's (triangles, new points
+    numbered from the end of ``vertices``): larger is better."""
+    from .strip_fill import score
+
+    return score(triangle_angles(np.concatenate([vertices, new]), tri))
+
+
+def zipped(s, splits, min_angle=None):
+    """(triangles, new points) of the strip over every point now on its sides, oriented as
+    it was (new points numbered from the end of ``splits``, not added to it); with
+    ``min_angle``, where the zip has a triangle under :data:`FILL` deg, points inside it
+    where they mend that (:func:`juncture.surface.strip_fill.filled`)."""
     v = splits.all()
-    tri = zip_strip(v, _with_points(s.a, splits), _with_points(s.b, splits), angles=True)
-    if _area_vectors(v[tri]).sum(axis=0) @ s.normal < 0.0:
+    a, b = _with_points(s.a, splits), _with_points(s.b, splits)
+    tri, new = zip_strip(v, a, b, angles=True), np.zeros((0, 3))
+    if min_angle and len(tri):
+        tri, new = _filled(tri, v, min_angle)
+    if _area_vectors(np.concatenate([v, new])[tri]).sum(axis=0) @ s.normal < 0.0:
         tri = tri[:, ::-1]
-    return tri
+    return tri, new
