@@ -27,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from .chart import locate, lscm
+from .patches import SUPER
 from .quality import triangle_angles
 
 __all__ = ["filled", "windows", "score", "ANGLES", "BUDGET", "BEND", "MARGIN", "POLISH", "SLIVER"]
@@ -46,7 +47,6 @@ SLIVER = 5.0
 POLISH = 30
 #: Zip rows taken to each side of a thin one (:func:`windows`).
 MARGIN = 12
-_SUPER = 3
 
 
 def filled(vertices, tri, min_angle):
@@ -209,7 +209,7 @@ def _inner_points(uv, cons, angle):
     except (RuntimeError, ValueError):
         return None
     p = tri.vertices_array()
-    new = np.stack([p["x"], p["y"]], axis=1)[_SUPER + len(uv):]
+    new = np.stack([p["x"], p["y"]], axis=1)[SUPER + len(uv):]
     off = _piece_distance(new, a, b) > 1e-9 * float(np.ptp(uv, axis=0).max())
     return new[off]
 
@@ -222,9 +222,9 @@ def _cdt(pts, cons):
         tri.remove_triangles(tri.collect_outer_triangles_and_holes())
     except (RuntimeError, ValueError):
         return None
-    if tri.vertices_count() - _SUPER != len(pts):
+    if tri.vertices_count() - SUPER != len(pts):
         return None
-    return tri.triangles_array()["vertices"].astype(np.int64) - _SUPER
+    return tri.triangles_array()["vertices"].astype(np.int64) - SUPER
 
 
 def _piece_distance(q, a, b):

@@ -214,7 +214,7 @@ def zipped_all(strips, splits, min_angle=None):
         ids = np.array(sorted(keys[i]))
         j = None if m is None or np.any(m[ids] < 0) else \
             where.get(frozenset(m[ids].tolist()))
-        if j is None or j == i or out[j] is not None:
+        if j is None or j == i:
             out[i] = _kept(zipped(s, splits, min_angle), splits)
             continue
         got = [zipped(s, splits, min_angle), zipped(strips[j], splits, min_angle)]
