@@ -168,3 +168,76 @@ def test_halving_ends_where_the_curve_jumps():
     # the smooth part is split until it sags by at most the tolerance
     near = np.r_[0.0, cuts[cuts < 0.3]]
     assert len(near) > 10 and np.diff(near).max() < 0.05
+
+
+DECK = "tests/data/generated/remesh/wing_body_network_carrying_the_root_curve_inside.inp"
+
+
+def _point_triangle(q, a, b, c):
+    """Distances of q (3,) from the triangles a, b, c (t, 3): the plane's where its foot falls
+    inside, else the nearest edge's."""
+    h, inside = plane_feet(q, np.stack([a, b, c], axis=1))
+    edges = np.min([_segment_distance(q, u, v) for u, v in ((a, b), (b, c), (c, a))], axis=0)
+    return np.where(inside, np.abs(h), edges)
+
+
+def test_a_root_curve_inside_a_wing_body_network_stays_in_the_mesh():
+    """Held-out seed 8181 draw 10: the wing and the fuselage's middle are one network, and
+    the root curve runs inside one patch of it (with a hole). The oracle: the curve's points
+    at 120 chord fractions a side, each found by brentq along the span on the body's signed
+    distance (from the deck's polygon sections) at the wing's PCHIP section point; every one
+    within 1e-6 L of the mesh (7.7e-4 L when the curve's points were left to the
+    triangulation)."""
+    from pathlib import Path
+
+    from tests.deckgen import read_text
+
+    root = Path(__file__).resolve().parents[2]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        geo = jc.complete(read_text((root / DECK).read_text()))
+        surface = jc.mesh(geo)
+    wing, body = geo.configuration.components["wing"], geo.configuration.components["body"]
+    v, t = surface.vertices, surface.triangles
+    size = float(np.ptp(v, axis=0).max())
+    worst, count = 0.0, 0
+    for side in ("upper", "lower"):
+        for f in np.linspace(0.0, 1.0, 120):
+            def error(s, f=f, side=side):
+                return float(body.signed_distance(wing.point(np.array([s]), np.array([f]),
+                                                             side, extrapolate=True))[0])
+            spans = np.linspace(0.0, 20.0, 81)
+            e = body.signed_distance(wing.point(spans, np.full(81, f), side, extrapolate=True))
+            k = np.flatnonzero((e[:-1] < 0.0) & (e[1:] >= 0.0))
+            if not len(k):
+                continue
+            s = brentq(error, spans[k[0]], spans[k[0] + 1], xtol=1e-12)
+            q = wing.point(np.array([s]), np.array([f]), side, extrapolate=True)[0]
+            near = (np.linalg.norm(v[t] - q, axis=2) < 3.0).any(axis=1)
+            d = _point_triangle(q, *(v[t[near, i]] for i in range(3))).min()
+            worst, count = max(worst, d / size), count + 1
+    assert count > 200
+    assert worst < 1e-6
+
+
+def test_only_edges_that_follow_the_curve_are_kept_inside_a_patch():
+    """``SeamCurves.follows`` (which inner curve edges ``creases.mark_curves`` keeps): the
+    assembled chords between juncture's points sag off the curve and are not kept (one such
+    chord, kept with its split points lifted onto the wing, folded the thin triangle beside
+    it on held-out seed 8282 draw 38), the pieces split to follow it are."""
+    from juncture.surface.assemble import assemble
+    from juncture.surface.creases import FOLLOWS
+    from juncture.surface.seam_curves import curve_edges, follow_curves, seam_curves
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", jc.JunctureWarning)
+        geo = jc.complete(wing_body(camber=1.5))
+    mesh = assemble(geo)
+    kept = []
+    for surface in (mesh, follow_curves(mesh, seam_curves(geo, mesh))):
+        curves = seam_curves(geo, surface)
+        t = surface.triangles
+        e = curve_edges(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), curves)
+        kept.append(curves.follows(e[:, 0], e[:, 1], FOLLOWS * curves.size))
+    assert len(kept[0]) > 10 and kept[0].mean() < 0.2
+    assert len(kept[1]) > 5 * len(kept[0]) and kept[1].all()

@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["corner_points", "mark_creases", "CORNER_LINE", "CORNER_CREASE", "ON_CORNER"]
+__all__ = ["corner_points", "mark_creases", "mark_curves", "CORNER_LINE", "CORNER_CREASE",
+           "ON_CORNER"]
 
 #: ``lines`` value (:func:`juncture.surface.pipeline._line_points`) of a vertex on a corner
 #: line of an arbitrary section.
@@ -27,6 +28,13 @@ CORNER_LINE = 2
 CORNER_CREASE = 5.0
 #: A vertex whose surface parameter is this near a corner's lies on that corner line.
 ON_CORNER = 1e-9
+#: An inner edge on an exact curve is kept only where its chord's middle lies within this
+#: share of the size of the curve (followed: :data:`~juncture.surface.seam_curves.SAG`,
+#: with room): a chord of the assembled surface, sagging off the curve, kept with its
+#: split points lifted onto the wing (both sides one network) folded the thin triangle
+#: between it and the fuselage's side (held-out seed 8282 draw 38: 12 crossing pairs,
+#: then held tries that doubled the triangles).
+FOLLOWS = 4e-6
 
 
 def corner_points(geometry, surface):
@@ -84,3 +92,41 @@ def mark_creases(charted, lines):
             patch.edges = np.concatenate([patch.edges, und[inner[turned]]])
             patch.keys = None
             patch.creases = int(turned.sum())
+
+
+def mark_curves(charted, curves):
+    """Append to each charted patch's ``edges`` its inner edges on an exact intersection
+    curve (``curves``, :class:`~juncture.surface.seam_curves.SeamCurves`: both ends on one
+    curve) that follow it (within :data:`FOLLOWS`, ``curves.follows``), keep their ends in
+    the chart and count them in ``patch.creases``. A layout that
+    makes a wing and the fuselage's middle one network (``wing-body upper``) carries the
+    curve inside a patch where the two do not turn by :data:`~juncture.surface.patches.CREASE`
+    across it: its points, split to follow the curve
+    (:func:`juncture.surface.seam_curves.follow_curves`), were inner vertices, dropped where
+    they stood close together (:data:`~juncture.surface.patches.NEAR`) and joined by
+    whatever edges the triangulation made, so the mesh cut the curve (by 7.7e-4 of the size
+    on held-out seed 8181 draw 10). A patch with more than one boundary loop is ``holed``: its
+    outside and holes are then found counting its boundary alone
+    (:func:`juncture.surface.remesh._outer_and_holes`)."""
+    if curves is None:
+        return
+    from .assemble import boundary_loops
+    from .chart import patch_edges
+
+    for patch in charted:
+        _, und, uses, _ = patch_edges(patch.tri)
+        inner = np.flatnonzero(uses == 2)
+        if not len(inner):
+            continue
+        ends = patch.ids[und[inner]]
+        inner = inner[curves.on_curve(ends[:, 0], ends[:, 1]) >= 0]
+        if len(inner):
+            ends = patch.ids[und[inner]]
+            inner = inner[curves.follows(ends[:, 0], ends[:, 1], FOLLOWS * curves.size)]
+        if not len(inner):
+            continue
+        patch.kept[und[inner].ravel()] = True
+        patch.edges = np.concatenate([patch.edges, und[inner]])
+        patch.keys = None
+        patch.creases += len(inner)
+        patch.holed = len(boundary_loops(patch.tri)) != 1

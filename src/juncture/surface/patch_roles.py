@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .creases import mark_creases
+from .creases import mark_creases, mark_curves
 from .mirror import twins
 from .patches import charts, patches
 from .rows import unique_pairs
@@ -77,6 +77,7 @@ def sorted_patches(mesh, keep, lift, splits, min_angle, lines=None, tiny=0.0,
             patch.lift = lift
             charted.append(patch)
     mark_creases(charted, lines)
+    mark_curves(charted, getattr(lift, "seam", None))
     mark_free(charted, splits)
     mark_slopes(charted, mesh)
     return charted, kept, strips, copied

@@ -82,6 +82,7 @@ class Patch:
     undo: tuple | None = None            # dropped points (chart, ids), worst angle before
     xyz: np.ndarray | None = None        # 3-D points of the chart vertices (assembled)
     creases: int = 0                     # inner edges kept (juncture.surface.creases)
+    holed: bool = False                  # has inner edges and more than one boundary loop
     checked: bool = False                # came to the shape check in a refining round
     held: bool = False                   # charted from triangles held where surfaces crossed
 

@@ -239,7 +239,8 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     try:
         tri.insert_vertices(np.ascontiguousarray(uv))
         tri.insert_edges(cons)
-        outer = tri.collect_outer_triangles() if patch.creases else \
+        outer = (_outer_and_holes(tri, cons, parent, patch) if patch.holed else
+                 tri.collect_outer_triangles()) if patch.creases else \
             tri.collect_outer_triangles_and_holes()
         piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1).min()
         shortest = max(patch.shortest * FINEST / SHORTEST,
@@ -315,6 +316,42 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         return False
     patch.out, patch.pts, patch.local = gid[local], pts, local
     return True
+
+
+def _outer_and_holes(tri, cons, parent, patch):
+    """The triangles of ``tri`` (constrained by the pieces ``cons``, not yet refined) outside
+    the patch's boundary or in its holes: those an even number of boundary pieces away from
+    the outside. Its inner kept edges (the last ``patch.creases`` of ``patch.edges``) are
+    constraints too but no boundary: PythonCDT's own depths count them, and a curve across
+    the patch (a wing's root in a wing-body network, from its leading to its trailing edge)
+    made the part beyond it a hole."""
+    import pythoncdt as cdt
+
+    inner_keys = {(min(a, b), max(a, b)) for a, b in
+                  patch.ids[patch.edges[len(patch.edges) - patch.creases:]].tolist()}
+    inner = np.array([(min(a, b), max(a, b)) in inner_keys
+                      for a, b in zip(parent[0].tolist(), parent[1].tolist())], bool)
+    bound = {(min(a, b), max(a, b)) for a, b in (cons[~inner].astype(np.int64)
+                                                  + SUPER).tolist()}
+    pieces = tri.piece_to_originals
+    crossing = set()
+    for e in tri.fixed_edges:
+        if any((min(o.v1, o.v2), max(o.v1, o.v2)) in bound for o in pieces.get(e, [e])):
+            crossing.add((min(e.v1, e.v2), max(e.v1, e.v2)))
+    t = tri.triangles_array()
+    v, nb = t["vertices"].astype(np.int64), t["neighbors"].astype(np.int64)
+    parity = np.full(len(v), -1)
+    todo = list(tri.collect_outer_triangles())
+    parity[todo] = 0
+    while todo:
+        k = todo.pop()
+        for n in nb[k].tolist():
+            if n == cdt.NO_NEIGHBOR or n >= len(v) or parity[n] >= 0:
+                continue
+            a, b = sorted(set(v[k].tolist()) & set(v[n].tolist()))
+            parity[n] = parity[k] ^ ((a, b) in crossing)
+            todo.append(n)
+    return set(np.flatnonzero(parity != 1).tolist())
 
 
 def _add_points(patch, splits, vertices, far):

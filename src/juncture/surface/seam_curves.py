@@ -102,6 +102,23 @@ class SeamCurves:
             out = np.where((out < 0) & mask[a] & mask[b], k, out)
         return out
 
+    def follows(self, a, b, tol):
+        """(k,) bool: the edges (a, b) on a curve whose chord's middle lies within ``tol`` of
+        the curve (followed, :func:`follow_curves`), or that are no longer than
+        :data:`PIECE` of the size (not split again)."""
+        a, b = np.asarray(a, np.int64), np.asarray(b, np.int64)
+        out = np.zeros(len(a), bool)
+        which = self.on_curve(a, b)
+        h = np.linalg.norm(self.vertices[b] - self.vertices[a], axis=1)
+        mid = 0.5 * (self.vertices[a] + self.vertices[b])
+        for k in np.unique(which[which >= 0]):
+            sel = np.flatnonzero(which == k)
+            wing, side, error, flip, _ = self.lines[k]
+            got = _onto(wing, side, error, mid[sel] * flip, h[sel], self.size) * flip
+            with np.errstate(invalid="ignore"):
+                out[sel] = np.linalg.norm(got - mid[sel], axis=1) <= tol
+        return out | ((which >= 0) & (h <= PIECE * self.size))
+
     def __call__(self, a, b, points):
         """``points`` split on edges (a, b) moved onto the exact curve where the edge lies on
         one (and the point moves by at most :data:`REACH` of the edge), else as they are."""
