@@ -23,6 +23,26 @@ def test_the_sample_wing_body_is_written_closed(tmp_path, capsys, fillet):
     assert len(msh.cells_dict["triangle"]) == len(tm.faces)
 
 
+def test_a_half_model_is_written_with_its_symmetry_plane_marked(tmp_path, capsys):
+    """``--half``: the y >= 0 half closed by the component "symmetry" (a Gmsh physical
+    group, an STL solid), half the whole airplane's volume."""
+    import meshio
+    import trimesh
+
+    assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "whole"), "-q"]) == 0
+    assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "half"), "--half", "--format",
+                 "stl", "msh", "--ascii"]) == 0
+    assert "FAIL" not in capsys.readouterr().out
+    msh = meshio.read(tmp_path / "half" / "mesh.msh")
+    assert "symmetry" in msh.field_data
+    assert "solid symmetry" in (tmp_path / "half" / "mesh.stl").read_text()
+    half = trimesh.load(tmp_path / "half" / "mesh.stl", force="mesh")
+    half.merge_vertices()              # one mesh per ASCII solid: their seams joined
+    whole = trimesh.load(tmp_path / "whole" / "mesh.stl")
+    assert half.is_watertight and half.is_winding_consistent
+    assert half.volume == pytest.approx(whole.volume / 2.0, rel=1e-6)  # float32 STL
+
+
 def test_the_bundled_airplane_is_written_closed(tmp_path, capsys):
     import trimesh
 

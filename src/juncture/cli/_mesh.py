@@ -38,6 +38,10 @@ def add_parser(sub, common):
     s.add_argument("--edge-length", type=float, default=None, metavar="H",
                    help="no triangle larger than an equilateral one of edge H (deck units; "
                         "default: none, the angle and the tolerance decide)")
+    s.add_argument("--half", action="store_true",
+                   help="the y >= 0 half, closed by its section in the plane of symmetry, "
+                        "written as the component 'symmetry' (a symmetry-plane marker); "
+                        "refused where the airplane is not its own mirror image")
     s.add_argument("--ascii", action="store_true",
                    help="ASCII STL with one named solid per component (default: binary)")
     return s
@@ -50,7 +54,7 @@ def run(args, progress):
     from ..errors import GeometryError
     from ..surface.assemble import assemble
     from ..surface.lift import surface_lift
-    from ..surface.pipeline import finish, overlapping_regions
+    from ..surface.pipeline import finish, half_checked, overlapping_regions
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration
@@ -87,6 +91,12 @@ def run(args, progress):
             fail(f"{exc}, so no mesh was written")
         if better is not mesh:
             mesh, summary = better, summarize(better)
+        if args.half:
+            try:
+                mesh, report = half_checked(mesh, args.min_angle)
+            except GeometryError as exc:
+                fail(f"{exc}, so no mesh was written")
+            summary = summarize(mesh)
         bar.step("write " + " ".join(args.format))
         out = output_dir(args.output)
         written = [write_mesh(mesh, out / f"mesh.{ext}", ascii=args.ascii).name

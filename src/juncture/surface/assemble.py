@@ -83,11 +83,14 @@ class SurfaceMesh:
         return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
     def wetted_area(self):
-        """{component: area of its triangles, caps excluded} and ``"total"``."""
+        """{component: area of its triangles, caps (and a half model's symmetry plane)
+        excluded} and ``"total"``."""
+        from .half import SYMMETRY
+
         a = self.areas()
         real = ~np.array([s.endswith(" cap") for s in self.surfaces])[self.surface]
         out = {name: float(a[(self.component == k) & real].sum())
-               for k, name in enumerate(self.components)}
+               for k, name in enumerate(self.components) if name != SYMMETRY}
         out["total"] = float(sum(out.values()))
         return out
 

@@ -12,7 +12,7 @@ import numpy as np
 
 from .assemble import assemble
 
-__all__ = ["mesh", "finish", "quality", "overlapping_regions"]
+__all__ = ["mesh", "finish", "half_checked", "quality", "overlapping_regions"]
 
 
 def overlapping_regions(geometry):
@@ -60,7 +60,7 @@ def _smaller(a, b, spans):
 
 
 def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
-         tolerance=1e-4, curvature=None, depth=None):
+         tolerance=1e-4, curvature=None, depth=None, half=False):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`~juncture.surface.assemble.assemble` (both halves unless
@@ -76,6 +76,9 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     times its size (a body's radius, a wing section's thickness; defaults
     :data:`~juncture.surface.remesh.CURVATURE`, :data:`~juncture.surface.remesh.DEPTH`: the
     volume converges as they shrink); ``min_angle=0`` keeps the networks' own triangles).
+    With ``half``, the y >= 0 half closed by its section in the plane of symmetry, the
+    component ``"symmetry"`` (:func:`juncture.surface.half.half_model`; checked the same
+    way; refused where the airplane is not its own mirror image).
 
     Returns
     -------
@@ -89,8 +92,27 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
         from .lift import surface_lift
 
         lift = surface_lift(geometry, surface)
-    return finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
-                  curvature, depth)[0]
+    whole = finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
+                   curvature, depth)[0]
+    return half_checked(whole, min_angle, check)[0] if half else whole
+
+
+def half_checked(surface, min_angle=25.0, check=True):
+    """(half model, report) of a closed, mirror-symmetric surface
+    (:func:`juncture.surface.half.half_model`), checked like the whole (report None without
+    ``check``); a half that fails a check is refused (:class:`~juncture.errors.GeometryError`)."""
+    from ..errors import GeometryError
+    from .check import check_mesh
+    from .half import SYMMETRY, half_model
+
+    half = half_model(surface, min_angle or 25.0)
+    if not check:
+        return half, None
+    report = check_mesh(half.vertices, half.triangles)
+    if not report.ok:
+        raise GeometryError("the half model fails its check: " + "; ".join(report.failures()),
+                            component=SYMMETRY)
+    return half, report
 
 
 def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
