@@ -43,6 +43,17 @@ def test_a_half_model_is_written_with_its_symmetry_plane_marked(tmp_path, capsys
     assert half.volume == pytest.approx(whole.volume / 2.0, rel=1e-6)  # float32 STL
 
 
+def test_flow_through_nacelles_are_written_as_rings(tmp_path, capsys):
+    """``--flow-through``: the transport's four nacelles are ducted, one handle each."""
+    import trimesh
+
+    assert main(["mesh", str(EXAMPLE_DECK), "-o", str(tmp_path), "--flow-through",
+                 "--min-angle", "0"]) == 0
+    assert "Euler characteristic -6" in capsys.readouterr().out
+    tm = trimesh.load(tmp_path / "mesh.stl")
+    assert tm.is_watertight and tm.is_winding_consistent and tm.euler_number == -6
+
+
 def test_the_bundled_airplane_is_written_closed(tmp_path, capsys):
     import trimesh
 

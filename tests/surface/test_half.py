@@ -19,10 +19,10 @@ from scipy.spatial import ConvexHull
 import juncture as jc
 from juncture.surface.assemble import SurfaceMesh
 from juncture.surface.check import check_mesh
-from juncture.surface.half import SYMMETRY, half_model
+from juncture.surface.half import SYMMETRY, half_model, symmetric
 from juncture.surface.pipeline import half_checked
 from juncture.surface.quality import triangle_angles
-from tests.support import EXAMPLE_DECK
+from tests.support import EXAMPLE_DECK, wing_body
 
 
 def _mesh(vertices, triangles, surface=None):
@@ -136,3 +136,24 @@ def test_the_transport_half_is_closed_and_holds_half_of_everything(transport):
     assert names == {"body cap", "fin 3 cap"}
     new = np.isin(half.surface, [half.surfaces.index(n) for n in names | {SYMMETRY}])
     assert triangle_angles(half.vertices, half.triangles[new]).min() >= 5.0
+
+
+def _with_fin(upper, lower, camber=None, y=0.0):
+    from juncture.model import Configuration, WingLike
+
+    cfg = wing_body()
+    xc = np.linspace(0.0, 100.0, 6)
+    fin = WingLike("fin 1", "fin", np.array([[40.0, y, 2.5], [50.0, y, 10.0]]),
+                   np.array([12.0, 5.0]), xc, np.tile(upper * np.sin(np.pi * xc / 100), (2, 1)),
+                   np.tile(lower * np.sin(np.pi * xc / 100), (2, 1)), camber, mirrored=False)
+    return Configuration({**cfg.components, "fin 1": fin})
+
+
+def test_only_an_airplane_that_is_its_own_mirror_image_gets_a_half_model():
+    symmetric(jc.read(EXAMPLE_DECK))
+    symmetric(_with_fin(3.0, 3.0))
+    for cfg in (_with_fin(3.0, 2.0), _with_fin(3.0, 3.0, np.full((2, 6), 0.1)),
+                _with_fin(3.0, 3.0, y=0.5)):
+        with pytest.raises(jc.GeometryError, match="fin 1: no half model: fin 1 is not its "
+                           "own mirror image in y = 0"):
+            symmetric(cfg)

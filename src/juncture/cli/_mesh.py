@@ -38,6 +38,10 @@ def add_parser(sub, common):
     s.add_argument("--edge-length", type=float, default=None, metavar="H",
                    help="no triangle larger than an equilateral one of edge H (deck units; "
                         "default: none, the angle and the tolerance decide)")
+    s.add_argument("--flow-through", action="store_true",
+                   help="nacelles open at both ends get a duct of the inlet's radius from "
+                        "inlet to exit (and a flat exit ring) instead of two caps, as the "
+                        "area rule's flow-through nacelles")
     s.add_argument("--half", action="store_true",
                    help="the y >= 0 half, closed by its section in the plane of symmetry, "
                         "written as the component 'symmetry' (a symmetry-plane marker); "
@@ -71,7 +75,7 @@ def run(args, progress):
         cfg = read_configuration(args.deck, "mesh")
         geo = complete(cfg, fillet, args.keep_area, options=opts)
         bar.step("assemble")
-        mesh = assemble(geo)
+        mesh = assemble(geo, flow_through=args.flow_through)
         summary = summarize(mesh)
         if not summary.closed or summary.open_loops:
             # the cause in the user's terms first, where it is known (as jc.mesh says it)
@@ -93,7 +97,7 @@ def run(args, progress):
             mesh, summary = better, summarize(better)
         if args.half:
             try:
-                mesh, report = half_checked(mesh, args.min_angle)
+                mesh, report = half_checked(mesh, args.min_angle, True, geo.configuration)
             except GeometryError as exc:
                 fail(f"{exc}, so no mesh was written")
             summary = summarize(mesh)

@@ -619,7 +619,7 @@ def _on_plane(geometry, nets):
     return out
 
 
-def assemble(geometry, mirror=True, cap=True):
+def assemble(geometry, mirror=True, cap=True, flow_through=False):
     """The networks of ``geometry`` as one :class:`SurfaceMesh` (see the module docstring).
 
     Parameters
@@ -630,11 +630,18 @@ def assemble(geometry, mirror=True, cap=True):
         as given.
     cap : bool
         Cap planar boundary loops (tips, blunt bases, open nacelle ends).
+    flow_through : bool
+        Join each nacelle's inlet to its exit by a duct instead of capping them
+        (:mod:`juncture.surface.ducts`).
     """
     nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
     if mirror:
         nets = _on_plane(geometry, nets)
     nets = point_ends(geometry, nets)
+    if flow_through:
+        from .ducts import with_ducts
+
+        nets = with_ducts(geometry, nets)
     owners = [geometry.component_of(name) for name in nets]
     components = tuple(dict.fromkeys(owners))
     pts, tris, comp_id, surf_id, offset = [], [], [], [], 0

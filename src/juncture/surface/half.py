@@ -15,9 +15,9 @@ component, a Gmsh physical group). :func:`half_model` takes the closed surface o
 - the section in y = 0, bounded by the half's rim there, triangulated the same way in (x,
   z): the component :data:`SYMMETRY`, facing -y.
 
-Refused (:class:`~juncture.errors.GeometryError`, naming the surfaces): a surface whose
-points have no mirror image (a centre-line fin of unsymmetric section: a half model would
-misstate the airplane), a rim left off the plane. The result passes
+Refused (:class:`~juncture.errors.GeometryError`, naming the component): an airplane that
+is not symmetric (a centre-line fin of cambered or unsymmetric section: a half model would
+misstate it; :func:`symmetric`), a rim left off the plane. The result passes
 :func:`juncture.surface.check.check_mesh` or is refused the same way. Its volume is half the
 whole surface's, the symmetry plane adding none (its points have y = 0).
 """
@@ -26,22 +26,27 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SYMMETRY", "half_model"]
+__all__ = ["SYMMETRY", "half_model", "symmetric"]
 
 #: The component (and surface) name of the section in the plane of symmetry.
 SYMMETRY = "symmetry"
 #: A straddling surface whose points lie this close to one plane (share of the size) is
 #: triangulated again in that plane.
 PLANAR = 1e-9
+#: Below this smallest angle [deg] a re-triangulated region takes points one at a time in
+#: its worst triangle while that helps (:func:`juncture.surface.strip_fill._polished`).
+POLISH = 10.0
 #: Rounds of points put inside a re-triangulated region (each round puts the circumcentres
 #: of the triangles thinner than the angle asked for, Ruppert's, where they split no rim).
 ROUNDS = 12
 
 
-def half_model(surface, min_angle=25.0):
-    """The y >= 0 half of the closed, mirror-symmetric ``surface`` (a
-    :class:`~juncture.surface.assemble.SurfaceMesh`), closed by its section in y = 0 (the
-    component and surface :data:`SYMMETRY`); see the module."""
+def half_model(surface, min_angle=25.0, configuration=None):
+    """The y >= 0 half of the closed ``surface`` (a
+    :class:`~juncture.surface.assemble.SurfaceMesh`) of a symmetric airplane, closed by its
+    section in y = 0 (the component and surface :data:`SYMMETRY`); see the module. The
+    airplane is symmetric where ``configuration`` says so (:func:`symmetric`), or without
+    one where every vertex has its mirror image in the mesh."""
     from ..errors import GeometryError
     from .assemble import SurfaceMesh
 
@@ -49,7 +54,10 @@ def half_model(surface, min_angle=25.0):
     y = v[t][:, :, 1]
     pos, neg = (y > 0).any(axis=1), (y < 0).any(axis=1)
     straddle = np.unique(surface.surface[pos & neg])
-    _mirrored(surface, straddle)
+    if configuration is None:
+        _mirrored(surface, straddle)
+    else:
+        symmetric(configuration)
     size = float(np.ptp(v, axis=0).max())
     keep = pos & ~neg & ~np.isin(surface.surface, straddle)
     crossed, at = _crossings(v, t[pos & neg])
@@ -77,6 +85,35 @@ def half_model(surface, min_angle=25.0):
                       tuple(surface.components) + (SYMMETRY,),
                       tuple(surface.surfaces) + (SYMMETRY,))
     return _compact(out)
+
+
+def symmetric(configuration):
+    """Refuse (:class:`~juncture.errors.GeometryError`, naming it) a component that is not
+    its own mirror image in y = 0 and has no image there: a centre-line fin whose section is
+    cambered or unsymmetric or that leaves the plane, a body off the plane without an image,
+    or a configuration not described as symmetric."""
+    from ..errors import GeometryError
+    from ..model import CircularBody, WingLike
+
+    if not configuration.symmetric:
+        raise GeometryError("no half model: the configuration is not described as symmetric "
+                            "about y = 0, so mesh both halves", component=SYMMETRY)
+    for comp in configuration:
+        if comp.mirrored:
+            continue
+        if isinstance(comp, WingLike):
+            lower = comp.upper if comp.lower is None else comp.lower
+            flat = comp.camber is None or not np.any(comp.camber)
+            if comp.span_axis == 2 and not np.any(comp.le[:, 1]) and flat and \
+                    np.array_equal(comp.upper, lower):
+                continue
+            why = "its sections are cambered or unsymmetric, or it leaves the plane"
+        elif isinstance(comp, CircularBody) and comp.origin[1] != 0.0:
+            why = "it lies off the plane with no image"
+        else:
+            continue
+        raise GeometryError(f"no half model: {comp.name} is not its own mirror image in "
+                            f"y = 0 ({why}), so mesh both halves", component=comp.name)
 
 
 def _mirrored(surface, straddle):
@@ -254,7 +291,8 @@ def _filled(uv, cons, min_angle):
     (:func:`juncture.surface.outside.interior_points`, no rim piece split), or None where
     PythonCDT refuses it."""
     from .outside import interior_points
-    from .strip_fill import _cdt
+    from .quality import triangle_angles
+    from .strip_fill import _cdt, _polished
 
     cons = np.asarray(cons, np.uint32)
     piece = np.linalg.norm(uv[cons[:, 0]] - uv[cons[:, 1]], axis=1)
@@ -269,7 +307,13 @@ def _filled(uv, cons, min_angle):
         if again is None:
             break
         pts, local = np.concatenate([pts, more]), again
-    return None if local is None else (pts, local)
+    if local is None:
+        return None
+    if triangle_angles(pts, local).min() < POLISH:        # where Ruppert's points cannot go
+        got = _polished(uv, cons, pts[len(uv):], loop=False)
+        if got is not None:
+            pts, local = np.concatenate([uv, got[0]]), got[1]
+    return pts, local
 
 
 def _compact(mesh):

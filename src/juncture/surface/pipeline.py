@@ -60,7 +60,7 @@ def _smaller(a, b, spans):
 
 
 def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
-         tolerance=1e-4, curvature=None, depth=None, half=False):
+         tolerance=1e-4, curvature=None, depth=None, half=False, flow_through=False):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`~juncture.surface.assemble.assemble` (both halves unless
@@ -78,7 +78,9 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     volume converges as they shrink); ``min_angle=0`` keeps the networks' own triangles).
     With ``half``, the y >= 0 half closed by its section in the plane of symmetry, the
     component ``"symmetry"`` (:func:`juncture.surface.half.half_model`; checked the same
-    way; refused where the airplane is not its own mirror image).
+    way; refused where the airplane is not its own mirror image). With ``flow_through``,
+    each nacelle's inlet is joined to its exit by a duct of the inlet's radius instead of
+    being capped (:mod:`juncture.surface.ducts`; a handle each).
 
     Returns
     -------
@@ -86,7 +88,7 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
         ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
         ``wetted_area()``.
     """
-    surface = assemble(geometry, mirror=mirror, cap=cap)
+    surface = assemble(geometry, mirror=mirror, cap=cap, flow_through=flow_through)
     lift = None
     if min_angle:
         from .lift import surface_lift
@@ -94,21 +96,25 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
         lift = surface_lift(geometry, surface)
     whole = finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
                    curvature, depth)[0]
-    return half_checked(whole, min_angle, check)[0] if half else whole
+    if not half:
+        return whole
+    return half_checked(whole, min_angle, check, geometry.configuration)[0]
 
 
-def half_checked(surface, min_angle=25.0, check=True):
+def half_checked(surface, min_angle=25.0, check=True, configuration=None):
     """(half model, report) of a closed, mirror-symmetric surface
-    (:func:`juncture.surface.half.half_model`), checked like the whole (report None without
-    ``check``); a half that fails a check is refused (:class:`~juncture.errors.GeometryError`)."""
+    (:func:`juncture.surface.half.half_model`, symmetric as ``configuration`` says), checked
+    like the whole (report None without ``check``); a half that fails a check is refused
+    (:class:`~juncture.errors.GeometryError`)."""
     from ..errors import GeometryError
     from .check import check_mesh
+    from .ducts import handles
     from .half import SYMMETRY, half_model
 
-    half = half_model(surface, min_angle or 25.0)
+    half = half_model(surface, min_angle or 25.0, configuration)
     if not check:
         return half, None
-    report = check_mesh(half.vertices, half.triangles)
+    report = check_mesh(half.vertices, half.triangles, handles=handles(half))
     if not report.ok:
         raise GeometryError("the half model fails its check: " + "; ".join(report.failures()),
                             component=SYMMETRY)
@@ -129,6 +135,7 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     wing's root block folding beside the dense seam), the assembled surface as it came is
     re-triangulated instead, as without the curves."""
     from .check import check_mesh
+    from .ducts import handles
 
     failures = None
     if min_angle:
@@ -146,7 +153,7 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
             return better, report
     report = None
     if check:
-        report = check_mesh(surface.vertices, surface.triangles)
+        report = check_mesh(surface.vertices, surface.triangles, handles=handles(surface))
         _refuse(geometry, surface, report.failures() + _crossing_surfaces(surface, report),
                 _kept_roots(geometry, surface, report) + _split_roots(geometry, surface,
                                                                       report))
@@ -310,6 +317,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     :data:`RETRIES`)."""
     from ..errors import GeometryError
     from .check import check_mesh
+    from .ducts import handles
     from .remesh import remesh
 
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
@@ -328,7 +336,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
             break
         if not check:
             return better, None, None
-        report = check_mesh(better.vertices, better.triangles)
+        report = check_mesh(better.vertices, better.triangles, handles=handles(better))
         failures = report.failures()
         if not failures:
             return better, report, None
