@@ -93,7 +93,9 @@ def test_refine_must_be_a_positive_integer(tmp_path, capsys):
                                                    ("--tolerance", "0", "> 0"),
                                                    ("--curvature", "0", "> 0 and <= 90"),
                                                    ("--depth", "0", "> 0"),
-                                                   ("--edge-length", "-1", "> 0")])
+                                                   ("--edge-length", "-1", "> 0"),
+                                                   ("--seam-size", "0", "> 0"),
+                                                   ("--growth", "0.9", "ratio > 1")])
 def test_sizing_options_out_of_range_get_one_line(tmp_path, capsys, flag, value, expected):
     assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "o"), flag, value]) == 2
     err = capsys.readouterr().err.strip().splitlines()

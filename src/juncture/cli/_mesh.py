@@ -38,6 +38,13 @@ def add_parser(sub, common):
     s.add_argument("--edge-length", type=float, default=None, metavar="H",
                    help="no triangle larger than an equilateral one of edge H (deck units; "
                         "default: none, the angle and the tolerance decide)")
+    s.add_argument("--seam-size", type=float, default=None, metavar="H",
+                   help="triangles of edge H at the lines where components meet, growing "
+                        "away from them by --growth (deck units; default: none)")
+    s.add_argument("--growth", type=float, default=None, metavar="RATIO",
+                   help="triangles grow away from the seams' finest pieces (and from "
+                        "--seam-size) by at most RATIO - 1 of the distance, e.g. 1.2 "
+                        "(default: no limit but the angle's; 1.25 with --seam-size)")
     s.add_argument("--flow-through", action="store_true",
                    help="nacelles open at both ends get a duct of the inlet's radius from "
                         "inlet to exit (and a flat exit ring) instead of two caps, as the "
@@ -90,7 +97,8 @@ def run(args, progress):
             bar.step("check (exact predicates)")
         try:
             better, report = finish(geo, mesh, True, args.min_angle, args.edge_length,
-                                    args.tolerance, lift, args.curvature, args.depth)
+                                    args.tolerance, lift, args.curvature, args.depth,
+                                    (args.growth, args.seam_size))
         except GeometryError as exc:
             fail(f"{exc}, so no mesh was written")
         if better is not mesh:
@@ -131,3 +139,7 @@ def _check_sizing(args, fail):
         fail(f"--depth {args.depth:g}: expected a share of the surface's size > 0, e.g. 3e-3")
     if args.edge_length is not None and not args.edge_length > 0.0:
         fail(f"--edge-length {args.edge_length:g}: expected a length > 0 in deck units")
+    if args.seam_size is not None and not args.seam_size > 0.0:
+        fail(f"--seam-size {args.seam_size:g}: expected a length > 0 in deck units")
+    if args.growth is not None and not 1.0 < args.growth <= 10.0:
+        fail(f"--growth {args.growth:g}: expected a ratio > 1 (e.g. 1.2) and <= 10")

@@ -38,6 +38,7 @@ class Shape(NamedTuple):
     turn: float          # cosine of the largest turn of the input triangles under one new
     curvature: float | None   # largest turn of an exact surface under one new edge [rad]
     depth: float | None       # largest sag of a new edge, share of the exact surface's size
+    size: object = None       # the target edge length at 3-D points (sizing.SizeField)
 
 
 def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
@@ -80,6 +81,18 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
         thin = 2 * patch.areas[under] < THIN * longest ** 2
         return centre[(dev > tol) & ~small & ~thin]
     return centre[((dev > tol) | turns) & ~small | across | deep]
+
+
+def oversized(splits, pts, gid, local, size):
+    """Chart centroids of the triangles whose longest 3-D edge exceeds
+    :data:`~juncture.surface.sizing.SLACK` times the size field ``size`` at their centre."""
+    from .sizing import SLACK
+
+    if size is None or not len(local):
+        return np.zeros((0, 2))
+    p = splits.all()[gid[local]]
+    longest = np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2).max(axis=1)
+    return pts[local].mean(axis=1)[longest > SLACK * size(p.mean(axis=1))]
 
 
 def chords(patch, splits, vertices, pts, gid, local, boundary):

@@ -60,7 +60,8 @@ def _smaller(a, b, spans):
 
 
 def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
-         tolerance=1e-4, curvature=None, depth=None, half=False, flow_through=False):
+         tolerance=1e-4, curvature=None, depth=None, half=False, flow_through=False,
+         growth=None, seam_size=None):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`~juncture.surface.assemble.assemble` (both halves unless
@@ -78,7 +79,11 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     volume converges as they shrink); ``min_angle=0`` keeps the networks' own triangles).
     With ``half``, the y >= 0 half closed by its section in the plane of symmetry, the
     component ``"symmetry"`` (:func:`juncture.surface.half.half_model`; checked the same
-    way; refused where the airplane is not its own mirror image). With ``flow_through``,
+    way; refused where the airplane is not its own mirror image). ``seam_size`` (a length)
+    and ``growth`` (a ratio, e.g. 1.2) grade the triangles: finer at the lines where
+    components meet, growing away from them and from the seams' shortest pieces no faster
+    than ``growth`` per unit of their size (:mod:`juncture.surface.sizing`). With
+    ``flow_through``,
     each nacelle's inlet is joined to its exit by a duct of the inlet's radius instead of
     being capped (:mod:`juncture.surface.ducts`; a handle each).
 
@@ -95,7 +100,7 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
 
         lift = surface_lift(geometry, surface)
     whole = finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
-                   curvature, depth)[0]
+                   curvature, depth, (growth, seam_size))[0]
     if not half:
         return whole
     return half_checked(whole, min_angle, check, geometry.configuration)[0]
@@ -122,7 +127,7 @@ def half_checked(surface, min_angle=25.0, check=True, configuration=None):
 
 
 def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
-           tolerance=1e-4, lift=None, curvature=None, depth=None):
+           tolerance=1e-4, lift=None, curvature=None, depth=None, grading=None):
     """(surface, report): the assembled ``surface`` re-triangulated by :func:`quality` (with
     ``min_angle``) and checked (with ``check``; report None without). The assembled surface
     itself is checked only where the re-triangulation is not kept (a re-triangulation that
@@ -143,12 +148,13 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
         if followed is not surface:
             better, report, _ = _remeshed(followed, min_angle, edge_length, tolerance,
                                           check, flift, curvature, depth,
-                                          _line_points(geometry, followed, flift), retries=0)
+                                          _line_points(geometry, followed, flift), retries=0,
+                                          grading=grading)
             if report is not None or (better is not followed and not check):
                 return better, report
         better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance,
                                              check, lift, curvature, depth,
-                                             _line_points(geometry, surface))
+                                             _line_points(geometry, surface), grading=grading)
         if report is not None or (better is not surface and not check):
             return better, report
     report = None
@@ -251,7 +257,7 @@ def _refuse(geometry, surface, failures, causes=()):
 
 
 def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True,
-            lift=None, curvature=None, depth=None):
+            lift=None, curvature=None, depth=None, grading=None):
     """(surface, report): ``surface`` re-triangulated by
     :func:`juncture.surface.remesh.remesh` and, with ``check``, its
     :func:`~juncture.surface.check.check_mesh` report.
@@ -266,10 +272,11 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     was (report None), with a :class:`~juncture.errors.JunctureWarning`. An open surface is
     returned as it is. ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points
     on the exact surfaces; ``curvature`` and ``depth`` (None: the defaults) size the
-    triangles on them.
+    triangles on them; ``grading`` (growth, seam size) grades them
+    (:mod:`juncture.surface.sizing`).
     """
     better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance, check,
-                                         lift, curvature, depth)
+                                         lift, curvature, depth, grading=grading)
     if failures:
         _not_kept(failures, stacklevel=3)
     return better, report
@@ -309,7 +316,7 @@ def _followed(geometry, surface, lift):
 
 
 def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature, depth,
-              lines=None, retries=None):
+              lines=None, retries=None, grading=None):
     """(surface, report, failures) of :func:`quality`, without its warning: failures None
     where the re-triangulation was kept or the surface is open (returned as it is).
     ``lines``: see :func:`juncture.surface.remesh.remesh`; ``retries``: how many times
@@ -321,6 +328,8 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     from .remesh import remesh
 
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
+    if grading is not None:
+        sizing.update(growth=grading[0], seam_size=grading[1])
     if surface.open_loops:
         return surface, None, None
     keep, held, frozen, local, crossings = set(), None, None, HELD_TRIES + 1, None
