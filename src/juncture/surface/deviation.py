@@ -16,6 +16,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
+from .memo import Memo, triangle_keys
 from .patch_roles import TAPER
 from .patches import area3, taper
 
@@ -52,6 +53,18 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     triangle thinner than :data:`THIN`."""
     if tol is False or not len(local):
         return np.zeros((0, 2))
+    memo = patch.memo.setdefault((tol, far_only, shape), Memo())
+    keys = triangle_keys(pts, gid, local, boundary)
+    out, todo, h = memo.get(keys)     # a triangle met before: its answer as it was
+    if len(todo):
+        out[todo] = _deviating(patch, splits, vertices, pts, gid, local[todo], tol, shape,
+                               boundary, far_only)
+        memo.add(h[todo], keys[todo], out[todo])
+    return pts[local[out]].mean(axis=1)
+
+
+def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary, far_only):
+    """(k,) bool: the triangles of :func:`deviating`."""
     centre = pts[local].mean(axis=1)
     ends = splits.all()[gid[local]]
     flat = ends.mean(axis=1)
@@ -59,7 +72,8 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     if tol is None:          # only the triangles with every corner on the boundary count
         rows = np.flatnonzero(rim)
         on = locate(patch.uv, patch.tri, vertices[patch.ids], centre[rows], patch.find)[0]
-        return centre[rows[np.linalg.norm(on - flat[rows], axis=1) > 1e-9 * patch.size]]
+        rim[rows] = np.linalg.norm(on - flat[rows], axis=1) > 1e-9 * patch.size
+        return rim
     on, under = locate(patch.uv, patch.tri, vertices[patch.ids], centre, patch.find)
     dev = np.linalg.norm(on - flat, axis=1)
     # a triangle far smaller than the input triangle under it is not split again (at a
@@ -71,7 +85,7 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
         corner = vertices[patch.ids[patch.tri[under]]]
         longest = np.linalg.norm(corner - np.roll(corner, 1, axis=1), axis=2).max(axis=1)
         thin = 2 * patch.areas[under] < THIN * longest ** 2
-        return centre[(dev > tol) & ~small & ~thin]
+        return (dev > tol) & ~small & ~thin
     across = rim & (dev > 1e-9 * patch.size)
     if patch.lift is not None:  # off the exact surface, where there is one, as a new
         # point there would be put: near a free boundary piece (a straight seam edge, not
@@ -85,7 +99,7 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids],
                               corners.reshape(-1, 2), patch.find)[1]].reshape(-1, 3, 3)
     turns = (np.einsum("ij,ikj->ik", patch.normals[under], nk) < shape.turn).any(axis=1)
-    return centre[((dev > tol) | turns) & ~small | across | deep]
+    return ((dev > tol) | turns) & ~small | across | deep
 
 
 def chords(patch, splits, vertices, pts, gid, local, boundary):
