@@ -156,16 +156,14 @@ def seam_lift(mesh, lift):
         """(points lifted by the triangle on one side, by the other, both sides exist)."""
         k = np.searchsorted(key, np.minimum(a, b) * n + np.maximum(a, b))
         ok = two[k]
-        got = []
-        for side in (0, 1):
-            r = pair[k, side]
-            out = points.copy()
-            for comp, surf in set(zip(mesh.component[r[ok]].tolist(),
-                                      mesh.surface[r[ok]].tolist())):
-                sel = ok & (mesh.component[r] == comp) & (mesh.surface[r] == surf)
-                out[sel] = lift(points[sel], tri[r[sel]], comp, surf)
-            got.append(out)
-        return got[0], got[1], ok
+        r = pair[k].T.ravel()                  # both sides at once: one lift per surface
+        on, at = np.tile(ok, 2), np.concatenate([points, points])
+        comp, surf = mesh.component[r], mesh.surface[r]
+        out = at.copy()
+        for c, s in set(zip(comp[on].tolist(), surf[on].tolist())):
+            sel = on & (comp == c) & (surf == s)
+            out[sel] = lift(at[sel], tri[r[sel]], c, s)
+        return out[:len(points)], out[len(points):], ok
 
     def move(a, b, points):
         one, other, ok = both(a, b, points)
