@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .rows import members
+
 __all__ = ["LENS", "COLLINEAR", "split_seams"]
 
 #: A point lies on a boundary edge's line when its distance from the edge is at most this share
@@ -54,7 +56,7 @@ def _boundary_edges(triangles):
     base = int(triangles.max()) + 1
     key = e[:, 0].astype(np.int64) * base + e[:, 1]
     rev = e[:, 1].astype(np.int64) * base + e[:, 0]
-    open_ = ~np.isin(key, rev)
+    open_ = ~members(rev, key)                   # no edge runs the other way
     return e[open_], owner[open_]
 
 
