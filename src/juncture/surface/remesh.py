@@ -413,23 +413,33 @@ def _edge_points(tri, n, cons, parent, uv, pts):
     put on constraint pieces, each on the piece's original edge."""
     if tri.fixed_edges_count() == len(cons):   # no piece was split
         return {}
-    piece = {}
-    for k, (a, b) in enumerate(cons.tolist()):
-        piece[(a, b)] = piece[(b, a)] = k
-    out = {}
+    found = {}                                  # new vertex: its original piece's ends
     for sub, originals in tri.piece_to_originals_iter():
         for v in (sub.v1 - SUPER, sub.v2 - SUPER):
-            if v < n or v in out:
-                continue
-            e = originals[0]
-            a, b = e.v1 - SUPER, e.v2 - SUPER
-            k = piece[(a, b)]
-            a, b = (int(x) for x in cons[k])
-            d = uv[b] - uv[a]
-            s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
-            ta, tb = float(parent[2][k]), float(parent[3][k])
-            out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
+            if v >= n and v not in found:
+                found[v] = (originals[0].v1 - SUPER, originals[0].v2 - SUPER)
+    if not found:
+        return {}
+    ends = np.array(list(found.values()), np.int64)
+    rows = _pieces_of(cons, ends, len(uv)).tolist()
+    out = {}
+    for v, k in zip(found, rows):
+        a, b = (int(x) for x in cons[k])
+        d = uv[b] - uv[a]
+        s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
+        ta, tb = float(parent[2][k]), float(parent[3][k])
+        out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
     return out
+
+
+def _pieces_of(cons, ends, n):
+    """(k,) the row of ``cons`` that joins each pair of ``ends`` (k, 2), either way round
+    (the last such row where two do)."""
+    key = np.minimum(cons[:, 0], cons[:, 1]).astype(np.int64) * n + np.maximum(cons[:, 0],
+                                                                                cons[:, 1])
+    order = np.argsort(key, kind="stable")
+    want = np.minimum(ends[:, 0], ends[:, 1]) * n + np.maximum(ends[:, 0], ends[:, 1])
+    return order[np.searchsorted(key[order], want, side="right") - 1]
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,

@@ -51,6 +51,16 @@ class Splits:
         self.n += len(p)
         return ids
 
+    def _add_one(self, p):
+        """:meth:`add_vertex` of one point (3,): its id."""
+        if self.n == len(self._xyz):
+            return int(self.add_vertex(p)[0])
+        self._xyz[self.n] = p
+        if self.mirror is not None:
+            self.mirror[self.n] = -1
+        self.n += 1
+        return self.n - 1
+
     def split(self, a, b, t):
         """The id of the point at fraction t from a on edge (a, b), made (with its mirror
         image) if new."""
@@ -80,7 +90,7 @@ class Splits:
             if abs(t - x) < SAME_T:
                 return i
         pa, pb = self._xyz[a], self._xyz[b]
-        got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
+        got[t] = self._add_one(pa + t * (pb - pa))
         self._sorted.pop((a, b), None)
         self.pending.append((a, b, got[t]))
         return got[t]
