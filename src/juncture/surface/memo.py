@@ -23,15 +23,15 @@ def triangle_keys(pts, gid, local, flags):
     """(k, 10) uint64 rows: the exact bits of each triangle's chart corners (in order), its
     vertex ids and its corners' boundary ``flags`` ((n, 2) bool), packed."""
     corners = np.ascontiguousarray(pts[local].reshape(len(local), 6)).view(np.uint64)
-    f = flags[local].reshape(len(local), 6).astype(np.uint64) << np.arange(6, dtype=np.uint64)
-    return np.concatenate([corners, gid[local].astype(np.uint64), f.sum(axis=1,
-                                                                         keepdims=True)], 1)
+    f = np.packbits(flags[local].reshape(len(local), 6), axis=1, bitorder="little")
+    return np.concatenate([corners, gid[local].astype(np.uint64), f.astype(np.uint64)], 1)
 
 
 def _hash(keys):
+    """(k,) uint64 hashes of the rows' ids and flags (the rest is compared, not hashed)."""
     h = np.zeros(len(keys), np.uint64)
     with np.errstate(over="ignore"):
-        for column in keys.T:
+        for column in keys[:, 6:].T:
             h = (h ^ column) * _MIX
             h ^= h >> np.uint64(29)
     return h
