@@ -63,16 +63,22 @@ def _boundary_edges(triangles):
 def _between(p, a, b, lens, end=None):
     """(mask, t, off): which points p (k, 3) lie strictly between a and b within the lens
     (``lens`` of the edge's length off it, narrowing to its ends: ``end``, :data:`END`),
-    their parameter along a -> b and their distance from it as a share of its length."""
+    their parameter along a -> b and their distance from it as a share of its length
+    (measured only where t lies strictly between 0 and 1; inf elsewhere)."""
     d = b - a
     length2 = float(d @ d)
     if length2 == 0.0:
         return np.zeros(len(p), bool), np.zeros(len(p)), np.full(len(p), np.inf)
     t = (p - a) @ d / length2
-    off = np.linalg.norm(p - a - t[:, None] * d, axis=1) / np.sqrt(length2)
+    rows = np.flatnonzero((t > 1e-9) & (t < 1.0 - 1e-9))
+    tr = t[rows]
+    off = np.full(len(p), np.inf)
+    off[rows] = np.linalg.norm(p[rows] - a - tr[:, None] * d, axis=1) / np.sqrt(length2)
     end = END if end is None else end
-    width = lens if np.isinf(end) else np.minimum(lens, end * np.minimum(t, 1.0 - t))
-    return (t > 1e-9) & (t < 1.0 - 1e-9) & (off <= width), t, off
+    width = lens if np.isinf(end) else np.minimum(lens, end * np.minimum(tr, 1.0 - tr))
+    near = np.zeros(len(p), bool)
+    near[rows] = off[rows] <= width
+    return near, t, off
 
 
 def _fan(tri, a, b, inserted):
