@@ -45,7 +45,7 @@ from .mirror import copy_triangles, mirror_map, symmetrise
 from .outside import interior_points, outside_splits
 from .patch_roles import TAPER, sorted_patches  # noqa: F401  (TAPER: remesh.TAPER)
 from .patches import SHORTEST, SUPER
-from .splits import Splits, fans, seam_lift
+from .splits import Splits, edge_points, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 
@@ -258,7 +258,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         return None
     pts = tri.vertices_array()
     pts = np.stack([pts["x"], pts["y"]], 1)[SUPER:]
-    on_edge = _edge_points(tri, n, cons, parent, uv, pts)
+    on_edge = edge_points(tri, n, cons, parent, uv, pts)
     gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     for v, (gi, gj, t) in on_edge.items():
         gid[v] = splits.split(gi, gj, t)
@@ -406,40 +406,6 @@ def _split_shared_chords(charted, splits, vertices):
         patch.extra_uv.append(mid)
         patch.extra_id.append(splits.add_vertex(on_surface(patch, vertices, mid)[0]))
         patch.seen = -1
-
-
-def _edge_points(tri, n, cons, parent, uv, pts):
-    """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
-    put on constraint pieces, each on the piece's original edge."""
-    if tri.fixed_edges_count() == len(cons):   # no piece was split
-        return {}
-    found = {}                                  # new vertex: its original piece's ends
-    for sub, originals in tri.piece_to_originals_iter():
-        for v in (sub.v1 - SUPER, sub.v2 - SUPER):
-            if v >= n and v not in found:
-                found[v] = (originals[0].v1 - SUPER, originals[0].v2 - SUPER)
-    if not found:
-        return {}
-    ends = np.array(list(found.values()), np.int64)
-    rows = _pieces_of(cons, ends, len(uv)).tolist()
-    out = {}
-    for v, k in zip(found, rows):
-        a, b = (int(x) for x in cons[k])
-        d = uv[b] - uv[a]
-        s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
-        ta, tb = float(parent[2][k]), float(parent[3][k])
-        out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
-    return out
-
-
-def _pieces_of(cons, ends, n):
-    """(k,) the row of ``cons`` that joins each pair of ``ends`` (k, 2), either way round
-    (the last such row where two do)."""
-    key = np.minimum(cons[:, 0], cons[:, 1]).astype(np.int64) * n + np.maximum(cons[:, 0],
-                                                                                cons[:, 1])
-    order = np.argsort(key, kind="stable")
-    want = np.minimum(ends[:, 0], ends[:, 1]) * n + np.maximum(ends[:, 0], ends[:, 1])
-    return order[np.searchsorted(key[order], want, side="right") - 1]
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
