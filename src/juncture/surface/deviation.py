@@ -53,7 +53,9 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     triangle thinner than :data:`THIN`."""
     if tol is False or not len(local):
         return np.zeros((0, 2))
-    memo = patch.memo.setdefault((tol, far_only, shape), Memo())
+    # keyed by what the answers depend on (not the whole shape: it may carry more)
+    memo = patch.memo.setdefault((tol, far_only, shape.turn, shape.curvature, shape.depth),
+                                 Memo())
     keys = triangle_keys(pts, gid, local, boundary)
     out, todo, h = memo.get(keys)     # a triangle met before: its answer as it was
     if len(todo):
