@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .ends import point_ends
+from .rows import members
 from .seams import split_seams
 
 __all__ = ["SurfaceMesh", "assemble", "boundary_loops", "simple_loops", "cap_polygon",
@@ -129,7 +130,7 @@ def boundary_loops(triangles):
     e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
     key = e[:, 0].astype(np.int64) * (int(e.max()) + 1) + e[:, 1]
     rev = e[:, 1].astype(np.int64) * (int(e.max()) + 1) + e[:, 0]
-    boundary = e[~np.isin(key, rev)]
+    boundary = e[~members(rev, key)]             # no edge runs the other way
     nxt = {}
     for a, b in boundary.tolist():  # construction over the boundary only
         nxt.setdefault(a, []).append(b)

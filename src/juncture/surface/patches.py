@@ -84,6 +84,7 @@ class Patch:
     creases: int = 0                     # inner edges kept (juncture.surface.creases)
     checked: bool = False                # came to the shape check in a refining round
     held: bool = False                   # charted from triangles held where surfaces crossed
+    memo: dict = field(default_factory=dict)   # per-triangle answers kept (surface.memo)
 
 
 def patches(mesh, lines=None):

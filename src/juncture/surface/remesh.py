@@ -46,7 +46,7 @@ from .outside import interior_points, outside_splits
 from .patch_roles import TAPER, sorted_patches  # noqa: F401  (TAPER: remesh.TAPER)
 from .patches import SHORTEST, SUPER
 from .sizing import size_field
-from .splits import Splits, fans, seam_lift
+from .splits import Splits, edge_points, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 
@@ -261,7 +261,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         return None
     pts = tri.vertices_array()
     pts = np.stack([pts["x"], pts["y"]], 1)[SUPER:]
-    on_edge = _edge_points(tri, n, cons, parent, uv, pts)
+    on_edge = edge_points(tri, n, cons, parent, uv, pts)
     gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     for v, (gi, gj, t) in on_edge.items():
         gid[v] = splits.split(gi, gj, t)
@@ -411,30 +411,6 @@ def _split_shared_chords(charted, splits, vertices):
         patch.extra_uv.append(mid)
         patch.extra_id.append(splits.add_vertex(on_surface(patch, vertices, mid)[0]))
         patch.seen = -1
-
-
-def _edge_points(tri, n, cons, parent, uv, pts):
-    """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
-    put on constraint pieces, each on the piece's original edge."""
-    if tri.fixed_edges_count() == len(cons):   # no piece was split
-        return {}
-    piece = {}
-    for k, (a, b) in enumerate(cons.tolist()):
-        piece[(a, b)] = piece[(b, a)] = k
-    out = {}
-    for sub, originals in tri.piece_to_originals_iter():
-        for v in (sub.v1 - SUPER, sub.v2 - SUPER):
-            if v < n or v in out:
-                continue
-            e = originals[0]
-            a, b = e.v1 - SUPER, e.v2 - SUPER
-            k = piece[(a, b)]
-            a, b = (int(x) for x in cons[k])
-            d = uv[b] - uv[a]
-            s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
-            ta, tb = float(parent[2][k]), float(parent[3][k])
-            out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
-    return out
 
 
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
