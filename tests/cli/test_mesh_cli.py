@@ -23,6 +23,37 @@ def test_the_sample_wing_body_is_written_closed(tmp_path, capsys, fillet):
     assert len(msh.cells_dict["triangle"]) == len(tm.faces)
 
 
+def test_a_half_model_is_written_with_its_symmetry_plane_marked(tmp_path, capsys):
+    """``--half``: the y >= 0 half closed by the component "symmetry" (a Gmsh physical
+    group, an STL solid), half the whole airplane's volume."""
+    import meshio
+    import trimesh
+
+    assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "whole"), "-q"]) == 0
+    assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "half"), "--half", "--format",
+                 "stl", "msh", "--ascii"]) == 0
+    assert "FAIL" not in capsys.readouterr().out
+    msh = meshio.read(tmp_path / "half" / "mesh.msh")
+    assert "symmetry" in msh.field_data
+    assert "solid symmetry" in (tmp_path / "half" / "mesh.stl").read_text()
+    half = trimesh.load(tmp_path / "half" / "mesh.stl", force="mesh")
+    half.merge_vertices()              # one mesh per ASCII solid: their seams joined
+    whole = trimesh.load(tmp_path / "whole" / "mesh.stl")
+    assert half.is_watertight and half.is_winding_consistent
+    assert half.volume == pytest.approx(whole.volume / 2.0, rel=1e-6)  # float32 STL
+
+
+def test_flow_through_nacelles_are_written_as_rings(tmp_path, capsys):
+    """``--flow-through``: the transport's four nacelles are ducted, one handle each."""
+    import trimesh
+
+    assert main(["mesh", str(EXAMPLE_DECK), "-o", str(tmp_path), "--flow-through",
+                 "--min-angle", "0"]) == 0
+    assert "Euler characteristic -6" in capsys.readouterr().out
+    tm = trimesh.load(tmp_path / "mesh.stl")
+    assert tm.is_watertight and tm.is_winding_consistent and tm.euler_number == -6
+
+
 def test_the_bundled_airplane_is_written_closed(tmp_path, capsys):
     import trimesh
 
@@ -62,7 +93,9 @@ def test_refine_must_be_a_positive_integer(tmp_path, capsys):
                                                    ("--tolerance", "0", "> 0"),
                                                    ("--curvature", "0", "> 0 and <= 90"),
                                                    ("--depth", "0", "> 0"),
-                                                   ("--edge-length", "-1", "> 0")])
+                                                   ("--edge-length", "-1", "> 0"),
+                                                   ("--seam-size", "0", "> 0"),
+                                                   ("--growth", "0.9", "ratio > 1")])
 def test_sizing_options_out_of_range_get_one_line(tmp_path, capsys, flag, value, expected):
     assert main(["mesh", str(PDAS_DECK), "-o", str(tmp_path / "o"), flag, value]) == 2
     err = capsys.readouterr().err.strip().splitlines()

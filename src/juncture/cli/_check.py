@@ -26,6 +26,9 @@ def add_parser(sub, common):
     s.add_argument("mesh", help="mesh file: .stl, .msh, .vtu, .vtk, .obj, .ply, .off")
     s.add_argument("--min-angle", type=angle,
                    default=0.0, help="also fail when a triangle has a smaller angle [deg]")
+    s.add_argument("--handles", type=int, default=0, metavar="N",
+                   help="the surface has N handles in all (a flow-through nacelle's duct is "
+                        "one; default 0: every body a sphere)")
     return s
 
 
@@ -36,7 +39,8 @@ def run(args, progress):
         bar.step("read")
         vertices, triangles = read_triangles(args.mesh)
         bar.step("check")
-        report = check_mesh(vertices, triangles, min_angle=args.min_angle)
+        report = check_mesh(vertices, triangles, min_angle=args.min_angle,
+                            handles=args.handles)
     lines = report.lines()
     if getattr(args, "quiet", False):
         lines = [line for line in lines if line.startswith("FAIL")]

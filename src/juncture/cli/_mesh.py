@@ -38,6 +38,21 @@ def add_parser(sub, common):
     s.add_argument("--edge-length", type=float, default=None, metavar="H",
                    help="no triangle larger than an equilateral one of edge H (deck units; "
                         "default: none, the angle and the tolerance decide)")
+    s.add_argument("--seam-size", type=float, default=None, metavar="H",
+                   help="triangles of edge H at the lines where components meet, growing "
+                        "away from them by --growth (deck units; default: none)")
+    s.add_argument("--growth", type=float, default=None, metavar="RATIO",
+                   help="triangles grow away from the seams' finest pieces (and from "
+                        "--seam-size) by at most RATIO - 1 of the distance, e.g. 1.2 "
+                        "(default: no limit but the angle's; 1.25 with --seam-size)")
+    s.add_argument("--flow-through", action="store_true",
+                   help="nacelles open at both ends get a duct of the inlet's radius from "
+                        "inlet to exit (and a flat exit ring) instead of two caps, as the "
+                        "area rule's flow-through nacelles")
+    s.add_argument("--half", action="store_true",
+                   help="the y >= 0 half, closed by its section in the plane of symmetry, "
+                        "written as the component 'symmetry' (a symmetry-plane marker); "
+                        "refused where the airplane is not its own mirror image")
     s.add_argument("--ascii", action="store_true",
                    help="ASCII STL with one named solid per component (default: binary)")
     return s
@@ -50,7 +65,7 @@ def run(args, progress):
     from ..errors import GeometryError
     from ..surface.assemble import assemble
     from ..surface.lift import surface_lift
-    from ..surface.pipeline import finish, overlapping_regions
+    from ..surface.pipeline import finish, half_checked, overlapping_regions
     from ..surface.quality import summarize
     from ..surface.write import write_mesh
     from ._commands import _complete_options, output_dir, read_configuration
@@ -67,7 +82,7 @@ def run(args, progress):
         cfg = read_configuration(args.deck, "mesh")
         geo = complete(cfg, fillet, args.keep_area, options=opts)
         bar.step("assemble")
-        mesh = assemble(geo)
+        mesh = assemble(geo, flow_through=args.flow_through)
         summary = summarize(mesh)
         if not summary.closed or summary.open_loops:
             # the cause in the user's terms first, where it is known (as jc.mesh says it)
@@ -82,11 +97,18 @@ def run(args, progress):
             bar.step("check (exact predicates)")
         try:
             better, report = finish(geo, mesh, True, args.min_angle, args.edge_length,
-                                    args.tolerance, lift, args.curvature, args.depth)
+                                    args.tolerance, lift, args.curvature, args.depth,
+                                    (args.growth, args.seam_size))
         except GeometryError as exc:
             fail(f"{exc}, so no mesh was written")
         if better is not mesh:
             mesh, summary = better, summarize(better)
+        if args.half:
+            try:
+                mesh, report = half_checked(mesh, args.min_angle, True, geo.configuration)
+            except GeometryError as exc:
+                fail(f"{exc}, so no mesh was written")
+            summary = summarize(mesh)
         bar.step("write " + " ".join(args.format))
         out = output_dir(args.output)
         written = [write_mesh(mesh, out / f"mesh.{ext}", ascii=args.ascii).name
@@ -117,3 +139,7 @@ def _check_sizing(args, fail):
         fail(f"--depth {args.depth:g}: expected a share of the surface's size > 0, e.g. 3e-3")
     if args.edge_length is not None and not args.edge_length > 0.0:
         fail(f"--edge-length {args.edge_length:g}: expected a length > 0 in deck units")
+    if args.seam_size is not None and not args.seam_size > 0.0:
+        fail(f"--seam-size {args.seam_size:g}: expected a length > 0 in deck units")
+    if args.growth is not None and not 1.0 < args.growth <= 10.0:
+        fail(f"--growth {args.growth:g}: expected a ratio > 1 (e.g. 1.2) and <= 10")

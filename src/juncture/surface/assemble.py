@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .ends import point_ends
+from .rows import members
 from .seams import split_seams
 
 __all__ = ["SurfaceMesh", "assemble", "boundary_loops", "simple_loops", "cap_polygon",
@@ -83,11 +84,14 @@ class SurfaceMesh:
         return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
     def wetted_area(self):
-        """{component: area of its triangles, caps excluded} and ``"total"``."""
+        """{component: area of its triangles, caps (and a half model's symmetry plane)
+        excluded} and ``"total"``."""
+        from .half import SYMMETRY
+
         a = self.areas()
         real = ~np.array([s.endswith(" cap") for s in self.surfaces])[self.surface]
         out = {name: float(a[(self.component == k) & real].sum())
-               for k, name in enumerate(self.components)}
+               for k, name in enumerate(self.components) if name != SYMMETRY}
         out["total"] = float(sum(out.values()))
         return out
 
@@ -126,7 +130,7 @@ def boundary_loops(triangles):
     e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
     key = e[:, 0].astype(np.int64) * (int(e.max()) + 1) + e[:, 1]
     rev = e[:, 1].astype(np.int64) * (int(e.max()) + 1) + e[:, 0]
-    boundary = e[~np.isin(key, rev)]
+    boundary = e[~members(rev, key)]             # no edge runs the other way
     nxt = {}
     for a, b in boundary.tolist():  # construction over the boundary only
         nxt.setdefault(a, []).append(b)
@@ -616,7 +620,7 @@ def _on_plane(geometry, nets):
     return out
 
 
-def assemble(geometry, mirror=True, cap=True):
+def assemble(geometry, mirror=True, cap=True, flow_through=False):
     """The networks of ``geometry`` as one :class:`SurfaceMesh` (see the module docstring).
 
     Parameters
@@ -627,11 +631,18 @@ def assemble(geometry, mirror=True, cap=True):
         as given.
     cap : bool
         Cap planar boundary loops (tips, blunt bases, open nacelle ends).
+    flow_through : bool
+        Join each nacelle's inlet to its exit by a duct instead of capping them
+        (:mod:`juncture.surface.ducts`).
     """
     nets = geometry.mirrored_networks() if mirror else dict(geometry.networks)
     if mirror:
         nets = _on_plane(geometry, nets)
     nets = point_ends(geometry, nets)
+    if flow_through:
+        from .ducts import with_ducts
+
+        nets = with_ducts(geometry, nets)
     owners = [geometry.component_of(name) for name in nets]
     components = tuple(dict.fromkeys(owners))
     pts, tris, comp_id, surf_id, offset = [], [], [], [], 0

@@ -225,14 +225,15 @@ def locate(uv, tri, points, query, find=None):
     lost = which < 0
     if lost.any():
         which[lost] = _nearest(uv, tri, query[lost])
-    a, b, c = (uv[tri[which, i]] for i in range(3))
+    corners = tri[which]
+    a, b, c = (uv[corners[:, i]] for i in range(3))
     v0, v1, v2 = b - a, c - a, query - a
     den = v0[:, 0] * v1[:, 1] - v0[:, 1] * v1[:, 0]
     s = (v2[:, 0] * v1[:, 1] - v2[:, 1] * v1[:, 0]) / den
     t = (v0[:, 0] * v2[:, 1] - v0[:, 1] * v2[:, 0]) / den
     wgt = np.clip(np.stack([1 - s - t, s, t], 1), 0.0, None)
     wgt /= wgt.sum(axis=1, keepdims=True)
-    return np.einsum("qk,qkj->qj", wgt, points[tri[which]]), which
+    return np.einsum("qk,qkj->qj", wgt, points[corners]), which
 
 
 def _nearest(uv, tri, query):

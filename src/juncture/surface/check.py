@@ -50,6 +50,8 @@ class CheckReport:
     min_angle: float
     min_angle_limit: float = 0.0
     examples: dict = field(default_factory=dict)
+    #: the handles the surface should have in all (a flow-through nacelle is one)
+    handles: int = 0
     #: (k, 2) the triangle pairs that intersect
     pairs: np.ndarray | None = field(default=None, repr=False, compare=False)
 
@@ -69,7 +71,12 @@ class CheckReport:
                 eg = self.examples.get(what)
                 out.append(f"{count} {what}" + (f", e.g. {eg}" if eg else ""))
         odd = [e for e in self.euler if e != 2]
-        if odd and not (self.open_edges or self.nonmanifold_edges):
+        genus = sum((2 - e) // 2 for e in self.euler)
+        if self.handles and odd and genus != self.handles and not (
+                self.open_edges or self.nonmanifold_edges):
+            out.append(f"{genus} handles in all (Euler characteristic "
+                       f"{', '.join(map(str, self.euler))}), expected {self.handles}")
+        elif odd and not self.handles and not (self.open_edges or self.nonmanifold_edges):
             out.append(f"{len(odd)} of {self.bodies} closed bodies are not spheres (Euler "
                        f"characteristic {', '.join(map(str, odd))}; genus "
                        f"{', '.join(str((2 - e) // 2) for e in odd)})")
@@ -444,8 +451,10 @@ def _folded(v, ta, tb, shared):
     return coplanar & (np.einsum("ij,ij->i", na, nb) > 0)
 
 
-def check_mesh(vertices, triangles, min_angle=0.0):
-    """The :class:`CheckReport` of a triangulated surface."""
+def check_mesh(vertices, triangles, min_angle=0.0, handles=0):
+    """The :class:`CheckReport` of a triangulated surface: with ``handles``, its bodies
+    together have that many (a flow-through nacelle's duct is one), else each is a
+    sphere."""
     v, tri = np.asarray(vertices, float), np.asarray(triangles, np.int64)
     keys, _, uses, n_forward = _edges(tri)
     two = uses == 2
@@ -475,4 +484,4 @@ def check_mesh(vertices, triangles, min_angle=0.0):
         misoriented_edges=int(np.sum(two & (n_forward != 1))), bodies=len(euler), euler=euler,
         volume=vol, volume_shift=moved - vol, intersecting_pairs=int(len(pairs)),
         min_angle=float(angles.min()) if len(tri) else 0.0, min_angle_limit=float(min_angle),
-        examples=examples, pairs=pairs)
+        examples=examples, pairs=pairs, handles=int(handles))

@@ -16,6 +16,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .chart import locate
+from .memo import Memo, triangle_keys
 from .patch_roles import TAPER
 from .patches import area3, taper
 
@@ -38,6 +39,7 @@ class Shape(NamedTuple):
     turn: float          # cosine of the largest turn of the input triangles under one new
     curvature: float | None   # largest turn of an exact surface under one new edge [rad]
     depth: float | None       # largest sag of a new edge, share of the exact surface's size
+    size: object = None       # the target edge length at 3-D points (sizing.SizeField)
 
 
 def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
@@ -52,13 +54,42 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     triangle thinner than :data:`THIN`."""
     if tol is False or not len(local):
         return np.zeros((0, 2))
+    # keyed by what the answers depend on (not the whole shape: it may carry more)
+    memo = patch.memo.setdefault((tol, far_only, shape.turn, shape.curvature, shape.depth),
+                                 Memo())
+    keys = triangle_keys(pts, gid, local, boundary)
+    out, todo, h = memo.get(keys)     # a triangle met before: its answer as it was
+    if len(todo):
+        out[todo] = _deviating(patch, splits, vertices, pts, gid, local[todo], tol, shape,
+                               boundary, far_only)
+        memo.add(h[todo], keys[todo], out[todo])
+    return pts[local[out]].mean(axis=1)
+
+
+def _deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary, far_only):
+    """(k,) bool: the triangles of :func:`deviating`."""
     centre = pts[local].mean(axis=1)
+    ends = splits.all()[gid[local]]
+    flat = ends.mean(axis=1)
+    rim = boundary[local, 0].all(axis=1)
+    if tol is None:          # only the triangles with every corner on the boundary count
+        rows = np.flatnonzero(rim)
+        on = locate(patch.uv, patch.tri, vertices[patch.ids], centre[rows], patch.find)[0]
+        rim[rows] = np.linalg.norm(on - flat[rows], axis=1) > 1e-9 * patch.size
+        return rim
     on, under = locate(patch.uv, patch.tri, vertices[patch.ids], centre, patch.find)
-    flat = splits.all()[gid[local]].mean(axis=1)
     dev = np.linalg.norm(on - flat, axis=1)
-    across = boundary[local, 0].all(axis=1) & (dev > 1e-9 * patch.size)
-    if tol is None:
-        return centre[across]
+    # a triangle far smaller than the input triangle under it is not split again (at a
+    # crease, where every triangle astride it turns, splitting would not end)
+    small = area3(ends) < SMALL * patch.areas[under]
+    if far_only:
+        if patch.lift is not None:
+            dev = np.linalg.norm(lifted(patch, on, under, centre) - flat, axis=1)
+        corner = vertices[patch.ids[patch.tri[under]]]
+        longest = np.linalg.norm(corner - np.roll(corner, 1, axis=1), axis=2).max(axis=1)
+        thin = 2 * patch.areas[under] < THIN * longest ** 2
+        return (dev > tol) & ~small & ~thin
+    across = rim & (dev > 1e-9 * patch.size)
     if patch.lift is not None:  # off the exact surface, where there is one, as a new
         # point there would be put: near a free boundary piece (a straight seam edge, not
         # lifted) only part of the way (:func:`lifted`), so splitting there ends
@@ -71,15 +102,19 @@ def deviating(patch, splits, vertices, pts, gid, local, tol, shape, boundary,
     nk = patch.normals[locate(patch.uv, patch.tri, vertices[patch.ids],
                               corners.reshape(-1, 2), patch.find)[1]].reshape(-1, 3, 3)
     turns = (np.einsum("ij,ikj->ik", patch.normals[under], nk) < shape.turn).any(axis=1)
-    # a triangle far smaller than the input triangle under it is not split again (at a
-    # crease, where every triangle astride it turns, splitting would not end)
-    small = area3(splits.all()[gid[local]]) < SMALL * patch.areas[under]
-    if far_only:
-        corner = vertices[patch.ids[patch.tri[under]]]
-        longest = np.linalg.norm(corner - np.roll(corner, 1, axis=1), axis=2).max(axis=1)
-        thin = 2 * patch.areas[under] < THIN * longest ** 2
-        return centre[(dev > tol) & ~small & ~thin]
-    return centre[((dev > tol) | turns) & ~small | across | deep]
+    return ((dev > tol) | turns) & ~small | across | deep
+
+
+def oversized(splits, pts, gid, local, size):
+    """Chart centroids of the triangles whose longest 3-D edge exceeds
+    :data:`~juncture.surface.sizing.SLACK` times the size field ``size`` at their centre."""
+    from .sizing import SLACK
+
+    if size is None or not len(local):
+        return np.zeros((0, 2))
+    p = splits.all()[gid[local]]
+    longest = np.linalg.norm(p - np.roll(p, 1, axis=1), axis=2).max(axis=1)
+    return pts[local].mean(axis=1)[longest > SLACK * size(p.mean(axis=1))]
 
 
 def chords(patch, splits, vertices, pts, gid, local, boundary):

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .ducts import duct_circles, onto_duct
+
 __all__ = ["surface_lift", "body_lift", "wing_lift", "ON_BODY"]
 
 #: A corner lies on its body's circle within this share of the airplane's size.
@@ -151,6 +153,7 @@ def _lifter(geometry, mesh, kind, move, classify):
     tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
     shared = _shared(mesh)
     known = {}
+    ducts = duct_circles(mesh)
 
     def flags(model, image, corners):
         key = (id(model), image)
@@ -164,6 +167,8 @@ def _lifter(geometry, mesh, kind, move, classify):
         size = np.full(len(points), np.inf)
         if not len(points) or name.endswith(" cap"):
             return points, size
+        if int(surface) in ducts:
+            return onto_duct(points, *ducts[int(surface)]), size
         image = name.endswith(" image")
         for model in models.get(int(component), ()):
             points, got = move(model, points, vertices[corners], shared[corners], image, tol,

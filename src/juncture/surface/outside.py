@@ -92,12 +92,24 @@ def interior_points(pts, local, cons, min_angle, shortest):
     ok = radius >= shortest
     ok[ok] = _first_crossed(p[ok].mean(axis=1), cc[ok], a, b) < 0
     ok[ok] = _encroached(cc[ok], a, b) < 0
-    chosen = []
-    for k in np.flatnonzero(ok)[np.argsort(worst[ok], kind="stable")]:
-        if all(np.linalg.norm(cc[k] - cc[j]) >= 0.5 * min(radius[k], radius[j])
-               for j in chosen):
-            chosen.append(k)
-    return cc[chosen].reshape(-1, 2)
+    return cc[_spread(cc, radius, np.flatnonzero(ok)[np.argsort(worst[ok], kind="stable")])
+              ].reshape(-1, 2)
+
+
+def _spread(cc, radius, order):
+    """The points ``order`` (ids into ``cc``, best first) kept one at a time, each no nearer
+    than half the smaller circumradius to one kept before it; only the points within half
+    its own radius can be that near, so only those are compared (a k-d tree)."""
+    from scipy.spatial import cKDTree
+
+    if not len(order):
+        return []
+    near = cKDTree(cc[order]).query_ball_point(cc[order], 0.5 * radius[order])
+    taken = np.zeros(len(order), bool)
+    for i, k in enumerate(order.tolist()):
+        taken[i] = not any(taken[j] and np.linalg.norm(cc[k] - cc[order[j]])
+                           < 0.5 * min(radius[k], radius[order[j]]) for j in near[i])
+    return order[taken]
 
 
 def _thin(pts, local, cons, min_angle, corners=False):

@@ -85,6 +85,7 @@ class Patch:
     holed: bool = False                  # has inner edges and more than one boundary loop
     checked: bool = False                # came to the shape check in a refining round
     held: bool = False                   # charted from triangles held where surfaces crossed
+    memo: dict = field(default_factory=dict)   # per-triangle answers kept (surface.memo)
 
 
 def patches(mesh, lines=None):

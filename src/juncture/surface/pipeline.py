@@ -12,7 +12,7 @@ import numpy as np
 
 from .assemble import assemble
 
-__all__ = ["mesh", "finish", "quality", "overlapping_regions"]
+__all__ = ["mesh", "finish", "half_checked", "quality", "overlapping_regions"]
 
 
 def overlapping_regions(geometry):
@@ -60,7 +60,8 @@ def _smaller(a, b, spans):
 
 
 def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_length=None,
-         tolerance=1e-4, curvature=None, depth=None):
+         tolerance=1e-4, curvature=None, depth=None, half=False, flow_through=False,
+         growth=None, seam_size=None):
     """One closed, consistently oriented triangulated surface of a completed geometry.
 
     ``juncture.mesh(geo)``: :func:`~juncture.surface.assemble.assemble` (both halves unless
@@ -76,6 +77,15 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
     times its size (a body's radius, a wing section's thickness; defaults
     :data:`~juncture.surface.remesh.CURVATURE`, :data:`~juncture.surface.remesh.DEPTH`: the
     volume converges as they shrink); ``min_angle=0`` keeps the networks' own triangles).
+    With ``half``, the y >= 0 half closed by its section in the plane of symmetry, the
+    component ``"symmetry"`` (:func:`juncture.surface.half.half_model`; checked the same
+    way; refused where the airplane is not its own mirror image). ``seam_size`` (a length)
+    and ``growth`` (a ratio, e.g. 1.2) grade the triangles: finer at the lines where
+    components meet, growing away from them and from the seams' shortest pieces no faster
+    than ``growth`` per unit of their size (:mod:`juncture.surface.sizing`). With
+    ``flow_through``,
+    each nacelle's inlet is joined to its exit by a duct of the inlet's radius instead of
+    being capped (:mod:`juncture.surface.ducts`; a handle each).
 
     Returns
     -------
@@ -83,18 +93,41 @@ def mesh(geometry, mirror=True, cap=True, check=True, min_angle=25.0, edge_lengt
         ``vertices``, ``triangles``, component and surface ids; ``volume()`` and
         ``wetted_area()``.
     """
-    surface = assemble(geometry, mirror=mirror, cap=cap)
+    surface = assemble(geometry, mirror=mirror, cap=cap, flow_through=flow_through)
     lift = None
     if min_angle:
         from .lift import surface_lift
 
         lift = surface_lift(geometry, surface)
-    return finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
-                  curvature, depth)[0]
+    whole = finish(geometry, surface, check, min_angle, edge_length, tolerance, lift,
+                   curvature, depth, (growth, seam_size))[0]
+    if not half:
+        return whole
+    return half_checked(whole, min_angle, check, geometry.configuration)[0]
+
+
+def half_checked(surface, min_angle=25.0, check=True, configuration=None):
+    """(half model, report) of a closed, mirror-symmetric surface
+    (:func:`juncture.surface.half.half_model`, symmetric as ``configuration`` says), checked
+    like the whole (report None without ``check``); a half that fails a check is refused
+    (:class:`~juncture.errors.GeometryError`)."""
+    from ..errors import GeometryError
+    from .check import check_mesh
+    from .ducts import handles
+    from .half import SYMMETRY, half_model
+
+    half = half_model(surface, min_angle or 25.0, configuration)
+    if not check:
+        return half, None
+    report = check_mesh(half.vertices, half.triangles, handles=handles(half))
+    if not report.ok:
+        raise GeometryError("the half model fails its check: " + "; ".join(report.failures()),
+                            component=SYMMETRY)
+    return half, report
 
 
 def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
-           tolerance=1e-4, lift=None, curvature=None, depth=None):
+           tolerance=1e-4, lift=None, curvature=None, depth=None, grading=None):
     """(surface, report): the assembled ``surface`` re-triangulated by :func:`quality` (with
     ``min_angle``) and checked (with ``check``; report None without). The assembled surface
     itself is checked only where the re-triangulation is not kept (a re-triangulation that
@@ -107,6 +140,7 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
     wing's root block folding beside the dense seam), the assembled surface as it came is
     re-triangulated instead, as without the curves."""
     from .check import check_mesh
+    from .ducts import handles
 
     failures = None
     if min_angle:
@@ -114,17 +148,18 @@ def finish(geometry, surface, check=True, min_angle=25.0, edge_length=None,
         if followed is not surface:
             better, report, _ = _remeshed(followed, min_angle, edge_length, tolerance,
                                           check, flift, curvature, depth,
-                                          _line_points(geometry, followed, flift), retries=0)
+                                          _line_points(geometry, followed, flift), retries=0,
+                                          grading=grading)
             if report is not None or (better is not followed and not check):
                 return better, report
         better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance,
                                              check, lift, curvature, depth,
-                                             _line_points(geometry, surface))
+                                             _line_points(geometry, surface), grading=grading)
         if report is not None or (better is not surface and not check):
             return better, report
     report = None
     if check:
-        report = check_mesh(surface.vertices, surface.triangles)
+        report = check_mesh(surface.vertices, surface.triangles, handles=handles(surface))
         _refuse(geometry, surface, report.failures() + _crossing_surfaces(surface, report),
                 _kept_roots(geometry, surface, report) + _split_roots(geometry, surface,
                                                                       report))
@@ -222,7 +257,7 @@ def _refuse(geometry, surface, failures, causes=()):
 
 
 def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=True,
-            lift=None, curvature=None, depth=None):
+            lift=None, curvature=None, depth=None, grading=None):
     """(surface, report): ``surface`` re-triangulated by
     :func:`juncture.surface.remesh.remesh` and, with ``check``, its
     :func:`~juncture.surface.check.check_mesh` report.
@@ -237,10 +272,11 @@ def quality(surface, min_angle=25.0, edge_length=None, tolerance=1e-4, check=Tru
     was (report None), with a :class:`~juncture.errors.JunctureWarning`. An open surface is
     returned as it is. ``lift`` (:func:`juncture.surface.lift.surface_lift`) puts new points
     on the exact surfaces; ``curvature`` and ``depth`` (None: the defaults) size the
-    triangles on them.
+    triangles on them; ``grading`` (growth, seam size) grades them
+    (:mod:`juncture.surface.sizing`).
     """
     better, report, failures = _remeshed(surface, min_angle, edge_length, tolerance, check,
-                                         lift, curvature, depth)
+                                         lift, curvature, depth, grading=grading)
     if failures:
         _not_kept(failures, stacklevel=3)
     return better, report
@@ -280,7 +316,7 @@ def _followed(geometry, surface, lift):
 
 
 def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature, depth,
-              lines=None, retries=None):
+              lines=None, retries=None, grading=None):
     """(surface, report, failures) of :func:`quality`, without its warning: failures None
     where the re-triangulation was kept or the surface is open (returned as it is).
     ``lines``: see :func:`juncture.surface.remesh.remesh`; ``retries``: how many times
@@ -288,9 +324,12 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
     :data:`RETRIES`)."""
     from ..errors import GeometryError
     from .check import check_mesh
+    from .ducts import handles
     from .remesh import remesh
 
     sizing = {k: v for k, v in (("curvature", curvature), ("depth", depth)) if v is not None}
+    if grading is not None:
+        sizing.update(growth=grading[0], seam_size=grading[1])
     if surface.open_loops:
         return surface, None, None
     keep, held, frozen, local, crossings = set(), None, None, HELD_TRIES + 1, None
@@ -306,7 +345,7 @@ def _remeshed(surface, min_angle, edge_length, tolerance, check, lift, curvature
             break
         if not check:
             return better, None, None
-        report = check_mesh(better.vertices, better.triangles)
+        report = check_mesh(better.vertices, better.triangles, handles=handles(better))
         failures = report.failures()
         if not failures:
             return better, report, None

@@ -40,12 +40,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from .deviation import Shape, chords, deviating, on_surface
+from .deviation import Shape, chords, deviating, on_surface, oversized
 from .mirror import copy_triangles, mirror_map, symmetrise
 from .outside import interior_points, outside_splits
 from .patch_roles import TAPER, sorted_patches  # noqa: F401  (TAPER: remesh.TAPER)
 from .patches import SHORTEST, SUPER
-from .splits import Splits, fans, seam_lift
+from .sizing import size_field
+from .splits import Splits, edge_points, fans, seam_lift
 
 __all__ = ["remesh", "MIN_ANGLE", "ROUNDS", "TOLERANCE", "TURN"]
 
@@ -65,6 +66,8 @@ MIRROR = True
 ROUNDS = 14
 REFINING = 9
 SPLITTING = 2
+#: Refining rounds added after the size field's (:mod:`juncture.surface.sizing`).
+GRADED = 3
 SETTLE = 10.0
 #: Default largest distance of a triangle's centre from the surface, share of the size.
 TOLERANCE = 1e-4
@@ -259,7 +262,7 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
         return None
     pts = tri.vertices_array()
     pts = np.stack([pts["x"], pts["y"]], 1)[SUPER:]
-    on_edge = _edge_points(tri, n, cons, parent, uv, pts)
+    on_edge = edge_points(tri, n, cons, parent, uv, pts)
     gid = np.concatenate([ids, np.full(len(pts) - n, -1)])
     for v, (gi, gj, t) in on_edge.items():
         gid[v] = splits.split(gi, gj, t)
@@ -309,6 +312,8 @@ def _triangulate_once(patch, splits, vertices, refine, min_angle, area, tol, sha
     if tol is not False:
         far = np.concatenate([far, chords(patch, splits, vertices, pts, gid, local,
                                            boundary)])
+    if refine:
+        far = np.concatenate([far, oversized(splits, pts, gid, local, shape.size)])
     if not refine and tol is None:
         far = np.concatenate([far, interior_points(pts, local, cons, min(min_angle, SETTLE),
                                                    shortest)])
@@ -445,33 +450,9 @@ def _split_shared_chords(charted, splits, vertices):
         patch.seen = -1
 
 
-def _edge_points(tri, n, cons, parent, uv, pts):
-    """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
-    put on constraint pieces, each on the piece's original edge."""
-    if tri.fixed_edges_count() == len(cons):   # no piece was split
-        return {}
-    piece = {}
-    for k, (a, b) in enumerate(cons.tolist()):
-        piece[(a, b)] = piece[(b, a)] = k
-    out = {}
-    for sub, originals in tri.piece_to_originals_iter():
-        for v in (sub.v1 - SUPER, sub.v2 - SUPER):
-            if v < n or v in out:
-                continue
-            e = originals[0]
-            a, b = e.v1 - SUPER, e.v2 - SUPER
-            k = piece[(a, b)]
-            a, b = (int(x) for x in cons[k])
-            d = uv[b] - uv[a]
-            s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
-            ta, tb = float(parent[2][k]), float(parent[3][k])
-            out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
-    return out
-
-
 def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
            turn=TURN, keep=(), lift=None, curvature=CURVATURE, depth=DEPTH, lines=None,
-           held=None, frozen=None, crossings=None):
+           held=None, frozen=None, crossings=None, growth=None, seam_size=None):
     """A :class:`~juncture.surface.assemble.SurfaceMesh` of the same closed surface with
     triangles of at least ``min_angle`` degrees wherever the patches' corners allow, and,
     with ``edge_length``, no triangle larger than an equilateral one of that edge.
@@ -495,7 +476,10 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     a new edge turns by at most ``curvature`` degrees and, with ``lift.both`` (the surface's
     size at the points, :func:`juncture.surface.lift.surface_lift`), stands off it by at most
     ``depth`` times that size (:func:`~juncture.surface.deviation.bent`): the enclosed
-    volume converges as both shrink.
+    volume converges as both shrink. With ``growth`` or ``seam_size``, triangles are no
+    larger than a size field that is ``seam_size`` on the lines where components meet and
+    grows away from them and from the seams' shortest pieces by at most ``growth``
+    (:func:`~juncture.surface.sizing.size_field`).
     ``lines`` ((n,) bool or int: 1 on intersection lines): a network is cut into patches
     where it turns at a crease between such points (:data:`~juncture.surface.patches.CREASE`);
     its edges between two vertices marked :data:`~juncture.surface.creases.CORNER_LINE` (an
@@ -512,14 +496,21 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
     charted, kept, strips, copied = sorted_patches(mesh, keep, lift, splits, min_angle,
                                                   lines, TINY * size, (held, frozen),
                                                   crossings)
-    shape = Shape(np.cos(np.radians(turn)), None if curvature is None else
-                   np.radians(curvature), depth)
-    for rnd in range(ROUNDS):
+    field = size_field(mesh, growth, seam_size, edge_length, lines)
+    graded = Shape(np.cos(np.radians(turn)), None if curvature is None else
+                   np.radians(curvature), depth, field)
+    # a size field splits in the first REFINING rounds; GRADED more refining rounds then
+    # let the other rules settle where it added points (without them a nose lost 1 % of
+    # its volume)
+    refining = REFINING + (GRADED if field is not None else 0)
+    rounds = ROUNDS + refining - REFINING
+    for rnd in range(rounds):
         # refine and split for shape; then split the pieces thin triangles encroach, then
         # only points inside (no seam points), the last round taking what it gets
-        refine = rnd < REFINING
-        rule = tol if refine else (None if rnd < ROUNDS - 1 else False)
-        split = REFINING <= rnd < REFINING + SPLITTING
+        refine = rnd < refining
+        rule = tol if refine else (None if rnd < rounds - 1 else False)
+        split = refining <= rnd < refining + SPLITTING
+        shape = graded if rnd < REFINING else graded._replace(size=None)
         for patch in charted:
             known = _known(patch, splits)
             if patch.out is not None and patch.seen == known:
@@ -531,7 +522,7 @@ def remesh(mesh, min_angle=MIN_ANGLE, edge_length=None, tolerance=TOLERANCE,
                 raise GeometryError(f"the chart of {mesh.surfaces[patch.surface]} could "
                                     "not be triangulated")
             patch.seen = known if done else -1
-        if rnd < ROUNDS - 1:
+        if rnd < rounds - 1:
             _split_shared_chords(charted, splits, mesh.vertices)
     tris, comp, surf = [], [], []
     for patch in charted:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["unique_pairs", "unique_points"]
+__all__ = ["unique_pairs", "unique_points", "members"]
 
 
 def _outputs(rows, first, inverse, counts, return_index, return_inverse, return_counts):
@@ -68,3 +68,14 @@ def unique_points(points, return_index=False, return_inverse=False, return_count
     counts = np.diff(np.append(starts, len(a)))
     return _outputs(s[new], order[new], inverse, counts, return_index, return_inverse,
                     return_counts)
+
+
+def members(keys, pool):
+    """(k,) bool: which of the integer ``keys`` are in ``pool``, as ``np.isin(keys, pool)``
+    (one sort of the pool and a binary search, where ``np.isin`` sorts both together)."""
+    keys = np.asarray(keys)
+    if not len(pool):
+        return np.zeros(keys.shape, bool)
+    ordered = np.sort(np.asarray(pool), axis=None)
+    at = np.minimum(np.searchsorted(ordered, keys), len(ordered) - 1)
+    return ordered[at] == keys

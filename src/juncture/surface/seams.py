@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .rows import members
+
 __all__ = ["LENS", "COLLINEAR", "split_seams"]
 
 #: A point lies on a boundary edge's line when its distance from the edge is at most this share
@@ -54,23 +56,29 @@ def _boundary_edges(triangles):
     base = int(triangles.max()) + 1
     key = e[:, 0].astype(np.int64) * base + e[:, 1]
     rev = e[:, 1].astype(np.int64) * base + e[:, 0]
-    open_ = ~np.isin(key, rev)
+    open_ = ~members(rev, key)                   # no edge runs the other way
     return e[open_], owner[open_]
 
 
 def _between(p, a, b, lens, end=None):
     """(mask, t, off): which points p (k, 3) lie strictly between a and b within the lens
     (``lens`` of the edge's length off it, narrowing to its ends: ``end``, :data:`END`),
-    their parameter along a -> b and their distance from it as a share of its length."""
+    their parameter along a -> b and their distance from it as a share of its length
+    (measured only where t lies strictly between 0 and 1; inf elsewhere)."""
     d = b - a
     length2 = float(d @ d)
     if length2 == 0.0:
         return np.zeros(len(p), bool), np.zeros(len(p)), np.full(len(p), np.inf)
     t = (p - a) @ d / length2
-    off = np.linalg.norm(p - a - t[:, None] * d, axis=1) / np.sqrt(length2)
+    rows = np.flatnonzero((t > 1e-9) & (t < 1.0 - 1e-9))
+    tr = t[rows]
+    off = np.full(len(p), np.inf)
+    off[rows] = np.linalg.norm(p[rows] - a - tr[:, None] * d, axis=1) / np.sqrt(length2)
     end = END if end is None else end
-    width = lens if np.isinf(end) else np.minimum(lens, end * np.minimum(t, 1.0 - t))
-    return (t > 1e-9) & (t < 1.0 - 1e-9) & (off <= width), t, off
+    width = lens if np.isinf(end) else np.minimum(lens, end * np.minimum(tr, 1.0 - tr))
+    near = np.zeros(len(p), bool)
+    near[rows] = off[rows] <= width
+    return near, t, off
 
 
 def _fan(tri, a, b, inserted):

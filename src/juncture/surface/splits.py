@@ -3,7 +3,9 @@
 :class:`Splits` holds the growing vertex array and, per input edge, the points added on it
 (one id per fraction, whichever patch made it), so that both sides of a seam take the same
 points. :func:`seam_lift` moves a split point onto the exact surface where the surfaces on
-both sides agree; :func:`fans` takes split points into a patch that keeps its triangles.
+both sides agree; :func:`fans` takes split points into a patch that keeps its triangles;
+:func:`edge_points` finds the points PythonCDT put on a chart's boundary pieces, each on its
+original edge.
 """
 
 from __future__ import annotations
@@ -11,8 +13,9 @@ from __future__ import annotations
 import numpy as np
 
 from .chart import patch_edges
+from .patches import SUPER
 
-__all__ = ["Splits", "fans", "seam_lift", "SAME_T"]
+__all__ = ["Splits", "edge_points", "fans", "seam_lift", "SAME_T"]
 
 #: Split points closer than this fraction of their edge are one point.
 SAME_T = 1e-6
@@ -51,6 +54,16 @@ class Splits:
         self.n += len(p)
         return ids
 
+    def _add_one(self, p):
+        """:meth:`add_vertex` of one point (3,): its id."""
+        if self.n == len(self._xyz):
+            return int(self.add_vertex(p)[0])
+        self._xyz[self.n] = p
+        if self.mirror is not None:
+            self.mirror[self.n] = -1
+        self.n += 1
+        return self.n - 1
+
     def split(self, a, b, t):
         """The id of the point at fraction t from a on edge (a, b), made (with its mirror
         image) if new."""
@@ -80,7 +93,7 @@ class Splits:
             if abs(t - x) < SAME_T:
                 return i
         pa, pb = self._xyz[a], self._xyz[b]
-        got[t] = int(self.add_vertex(pa + t * (pb - pa))[0])
+        got[t] = self._add_one(pa + t * (pb - pa))
         self._sorted.pop((a, b), None)
         self.pending.append((a, b, got[t]))
         return got[t]
@@ -156,16 +169,14 @@ def seam_lift(mesh, lift):
         """(points lifted by the triangle on one side, by the other, both sides exist)."""
         k = np.searchsorted(key, np.minimum(a, b) * n + np.maximum(a, b))
         ok = two[k]
-        got = []
-        for side in (0, 1):
-            r = pair[k, side]
-            out = points.copy()
-            for comp, surf in set(zip(mesh.component[r[ok]].tolist(),
-                                      mesh.surface[r[ok]].tolist())):
-                sel = ok & (mesh.component[r] == comp) & (mesh.surface[r] == surf)
-                out[sel] = lift(points[sel], tri[r[sel]], comp, surf)
-            got.append(out)
-        return got[0], got[1], ok
+        r = pair[k].T.ravel()                  # both sides at once: one lift per surface
+        on, at = np.tile(ok, 2), np.concatenate([points, points])
+        comp, surf = mesh.component[r], mesh.surface[r]
+        out = at.copy()
+        for c, s in set(zip(comp[on].tolist(), surf[on].tolist())):
+            sel = on & (comp == c) & (surf == s)
+            out[sel] = lift(at[sel], tri[r[sel]], c, s)
+        return out[:len(points)], out[len(points):], ok
 
     def move(a, b, points):
         one, other, ok = both(a, b, points)
@@ -186,3 +197,37 @@ def seam_lift(mesh, lift):
 
     move.agree = agree
     return move
+
+
+def edge_points(tri, n, cons, parent, uv, pts):
+    """{new vertex: (global i, global j, fraction from i)} for the new vertices PythonCDT
+    put on constraint pieces, each on the piece's original edge."""
+    if tri.fixed_edges_count() == len(cons):   # no piece was split
+        return {}
+    found = {}                                  # new vertex: its original piece's ends
+    for sub, originals in tri.piece_to_originals_iter():
+        for v in (sub.v1 - SUPER, sub.v2 - SUPER):
+            if v >= n and v not in found:
+                found[v] = (originals[0].v1 - SUPER, originals[0].v2 - SUPER)
+    if not found:
+        return {}
+    ends = np.array(list(found.values()), np.int64)
+    rows = _pieces_of(cons, ends, len(uv)).tolist()
+    out = {}
+    for v, k in zip(found, rows):
+        a, b = (int(x) for x in cons[k])
+        d = uv[b] - uv[a]
+        s = float(np.clip((pts[v] - uv[a]) @ d / (d @ d), 0.0, 1.0))
+        ta, tb = float(parent[2][k]), float(parent[3][k])
+        out[v] = (int(parent[0][k]), int(parent[1][k]), ta + s * (tb - ta))
+    return out
+
+
+def _pieces_of(cons, ends, n):
+    """(k,) the row of ``cons`` that joins each pair of ``ends`` (k, 2), either way round
+    (the last such row where two do)."""
+    key = np.minimum(cons[:, 0], cons[:, 1]).astype(np.int64) * n + np.maximum(cons[:, 0],
+                                                                                cons[:, 1])
+    order = np.argsort(key, kind="stable")
+    want = np.minimum(ends[:, 0], ends[:, 1]) * n + np.maximum(ends[:, 0], ends[:, 1])
+    return order[np.searchsorted(key[order], want, side="right") - 1]

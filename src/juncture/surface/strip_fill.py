@@ -134,25 +134,28 @@ def _leaves(t, pts, p3, uv, local, xyz):
     return bool(np.any(np.linalg.norm(on - straight, axis=1) > BEND * length))
 
 
-def _polished(uv, cons, inner):
+def _polished(uv, cons, inner, loop=True):
     """(inner points, triangles) of the chart ``uv`` with the points ``inner`` inside the
     loop ``cons``, then, while it raises the smallest angle (up to :data:`POLISH` times),
     one more point in the worst triangle: on the bisector of its shortest edge at a
     quarter, half or all of the way to its circumcentre, or its centroid, whichever gives
-    the best; None where PythonCDT refuses the first."""
+    the best; None where PythonCDT refuses the first. Without ``loop`` (``cons`` are pieces
+    in any order, of any number of loops) a point outside is not ruled out first: the
+    triangulation leaves it out, so it raises nothing."""
     from matplotlib.path import Path
 
     t = _cdt(np.concatenate([uv, inner]), cons)
     if t is None:
         return None
-    ring = Path(uv[cons[:, 0]])
+    ring = Path(uv[cons[:, 0]]) if loop else None
     pts = np.concatenate([uv, inner])
     worst = triangle_angles(pts, t).min(axis=1)
     for _ in range(POLISH):
         k = int(np.argmin(worst))
         best = None
         for q in _candidates(pts[t[k]]):
-            if not ring.contains_point(q) or np.linalg.norm(pts - q, axis=1).min() < 1e-9:
+            if ring is not None and not ring.contains_point(q) or \
+                    np.linalg.norm(pts - q, axis=1).min() < 1e-9:
                 continue
             more = np.concatenate([pts, q[None]])
             tt = _cdt(more, cons)
