@@ -11,8 +11,8 @@ upper or lower surface at chord fraction f, is a span station s where W's surfac
 (``radial_error`` of a circular body, ``signed_distance`` of an arbitrary one; negative
 inside, zero exactly on the surface). For each f the error is sampled along the span and
 every sign change refined by regula falsi with the Illinois step (all brackets of all
-fractions at once, vectorised) to the last bit of s. A sign change that is a jump, not a zero (a body's end, a step at a
-joint), is dropped: the error there does not vanish.
+fractions at once, vectorised) to the last bit of s. A sign change that is a jump, not a
+zero (a body's end, a step at a joint), is dropped: the error there does not vanish.
 
 Which zeros are seams: every zero on W's own span (root to tip section; a completed
 geometry's model has its roots continued into the fuselage) is a point where the two exact
