@@ -25,7 +25,7 @@ import numpy as np
 
 from .ducts import duct_circles, onto_duct
 
-__all__ = ["surface_lift", "body_lift", "wing_lift", "ON_BODY"]
+__all__ = ["surface_lift", "body_lift", "wing_lift", "shared_vertices", "ON_BODY"]
 
 #: A corner lies on its body's circle within this share of the airplane's size.
 ON_BODY = 1e-9
@@ -120,7 +120,7 @@ def _polar(body, points, image):
     return rho, radius, centre, d / np.where(rho > 0, rho, 1.0)[:, None]
 
 
-def _shared(mesh):
+def shared_vertices(mesh):
     """(n_vertices,) bool: vertices of triangles of more than one component (the seams
     between components: intersection and fillet-start lines)."""
     n = len(mesh.vertices)
@@ -137,7 +137,7 @@ def _lifter(geometry, mesh, kind, move, classify):
     (k, 3, 3), seam (k, 3), image, tol, sized, flags)`` (which returns the points and their
     sizes) for points on components of type ``kind`` (caps excluded), or None when the
     geometry has none. ``seam``: the corners that other components' triangles share
-    (:func:`_shared`); ``flags``: ``classify(model, vertices, image, tol)`` (a tuple of
+    (:func:`shared_vertices`); ``flags``: ``classify(model, vertices, image, tol)`` (a tuple of
     per-vertex arrays: where each vertex lies on the model), made once per model and side
     for every vertex of the mesh and taken at the corners (k, 3).
 
@@ -151,7 +151,7 @@ def _lifter(geometry, mesh, kind, move, classify):
         return None
     vertices = np.asarray(mesh.vertices, float)
     tol = ON_BODY * float(np.ptp(vertices, axis=0).max())
-    shared = _shared(mesh)
+    shared = shared_vertices(mesh)
     known = {}
     ducts = duct_circles(mesh)
 

@@ -77,18 +77,13 @@ def size_field(mesh, growth=None, seam_size=None, edge_length=None, lines=None):
     np.minimum.at(h, ends[:, 0], length)
     np.minimum.at(h, ends[:, 1], length)
     if seam_size is not None:
-        on = _on_lines(mesh) if lines is None else np.asarray(lines) == 1
+        if lines is None:
+            from .lift import shared_vertices
+
+            on = shared_vertices(mesh)
+        else:
+            on = np.asarray(lines) == 1
         h[on] = np.minimum(h[on], float(seam_size))
     src = np.isfinite(h)
     return SizeField(v[src], h[src], GROWTH if growth is None else growth, edge_length)
 
-
-def _on_lines(mesh):
-    """(n,) bool: vertices that triangles of two components share."""
-    comp = np.repeat(np.asarray(mesh.component), 3)
-    ids = np.asarray(mesh.triangles).ravel()
-    n = len(mesh.vertices)
-    lo, hi = np.full(n, np.iinfo(np.int64).max), np.full(n, -1)
-    np.minimum.at(lo, ids, comp)
-    np.maximum.at(hi, ids, comp)
-    return (hi >= 0) & (lo != hi)
