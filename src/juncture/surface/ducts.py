@@ -81,22 +81,19 @@ def _duct(net, comp):
             f"{wall[where - 1]:.4g}); a flow-through nacelle must be wider than its inlet "
             "behind it, or mesh it closed", component=comp, station=float(x[where]))
     duct[-1] = net[-1]          # the last interval flares (or narrows) to the exit ring
-    if _faces(duct, centre, axis=True):
+    if _faces_axis(duct, centre):
         return duct
     return duct[::-1]
 
 
-def _faces(net, direction, axis=False):
+def _faces_axis(net, centre):
     """Whether the triangles of ``net`` (a triangle (i, j), (i+1, j+1), (i+1, j) of each
-    quad, as the mesh orients them) face ``direction``, or with ``axis`` the line along x
-    through the point ``direction``."""
+    quad, as the mesh orients them) face the line along x through the point ``centre``."""
     a, b, c = net[:-1, :-1], net[1:, 1:], net[1:, :-1]
     n = np.cross(b - a, c - a)
-    if axis:
-        to_axis = direction - (a + b + c) / 3.0
-        to_axis[..., 0] = 0.0
-        return float(np.einsum("ijk,ijk->", n, to_axis)) > 0.0
-    return float(np.einsum("ijk,k->", n, direction)) > 0.0
+    to_axis = centre - (a + b + c) / 3.0
+    to_axis[..., 0] = 0.0
+    return float(np.einsum("ijk,ijk->", n, to_axis)) > 0.0
 
 
 def duct_circles(mesh):
