@@ -237,7 +237,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
         by_comp[pair.a]["lower"].append(lo)
         if pair.role == "body" and not isinstance(work[pair.b], WingLike) and \
                 pair.b != body.name:
-            pylons.setdefault(pair.b, []).append((up, lo))
+            pylons.setdefault(pair.b, []).append((up, lo, work[pair.a]))
     log.append("touching pairs: " + ", ".join(f"{p.a}/{p.b} ({p.role})" for p in found))
     nets = {}
     for comp in work:
@@ -261,7 +261,7 @@ def _other_components(cfg, wing, body, opts, log, known=None):
 
     for pod_name, lines in pylons.items():
         pod_net = nets[pod_name][0]
-        for out_i, in_i in lines:
+        for out_i, in_i, _ in lines:
             for inter in (out_i, in_i):
                 log.append(f"seam {pod_name} / {inter.name.split('/')[0]} ({inter.name} line): "
                            f"max gap {seam_gap(inter.points, pod_net):.3g}")

@@ -90,6 +90,25 @@ def test_inserted_sections_lie_on_the_lofted_surface(spans):
             np.testing.assert_allclose(new[k], w.point(s, X / 100, side), atol=1e-9)
 
 
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.integers(-60, 149), min_size=1, max_size=3, unique=True),
+       st.sampled_from(["pchip", "linear"]))
+def test_inserted_sections_keep_the_surface_between_stations(halves, chordwise):
+    """Every point of the copy, at any chord fraction, is the original's: inside, and
+    extrapolated inboard as TM-4406 eq 4 extends the lofting lines (a root continued into
+    a fuselage). A PCHIP through the blended ordinates of a 4-point section put such a
+    root 6e-3 ft off between stations."""
+    spans = 0.5 * np.array(halves) + 0.25          # half a unit apart at least
+    w = wing(chordwise=chordwise)
+    w2 = w.with_sections(spans, extrapolate=True)
+    s = np.linspace(min(spans) - 5.0, 75.0, 23)
+    f = np.linspace(0.0, 1.0, 37)
+    for side in ("upper", "lower"):
+        got = w2.point(s[:, None], f[None, :], side, extrapolate=True)
+        want = w.point(s[:, None], f[None, :], side, extrapolate=True)
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-9)   # round-off, span 230
+
+
 def test_network_orientation_gives_outward_normals():
     w = wing()
     for name, net in w.networks().items():

@@ -184,3 +184,21 @@ def test_generated_airplanes_give_a_closed_half_or_a_refusal_by_name(deck):
         assert not comp.mirrored
         return
     _assert_closed_half(half, whole.volume())
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(0.5, 50.0), st.floats(0.05, 5.0), st.floats(0.05, 5.0), st.floats(0.05, 5.0))
+def test_points_on_the_plane_start_as_far_from_a_corner_as_the_rim(span, first, last, h):
+    """The points put on y = 0 between a planar cap's rim ends: the piece at each end about
+    as long as the rim's piece there (a nearer point beside a thin trailing edge's corner
+    made a 3.3 deg sliver on the transport's fin tip), then turning towards the rim's
+    usual piece by half the distance, never a piece under half of what it should be."""
+    from juncture.surface.half import _spacing
+
+    t = _spacing(span, first, last, h)
+    pieces = np.diff(np.concatenate([[0.0], t * span, [span]]))
+    assert np.all(t > 0.0) and np.all(t < 1.0) and np.all(np.diff(t) > 0.0)
+    if len(t):
+        assert pieces[0] >= 0.5 * min(first, span)
+        assert pieces[-1] >= 0.5 * min(last, pieces[:-1].max())
+        assert pieces.max() <= 2.0 * max(first, last, h)

@@ -87,6 +87,43 @@ def test_a_pylons_two_lines_a_hair_apart_in_x_make_one_station_of_the_pod():
         assert all(any(np.array_equal(p, q) for q in net[:, col]) for p in pts)
 
 
+def test_a_pod_under_a_fin_ends_its_arcs_on_the_fins_exact_surface():
+    """A fin standing on a pod: the pod's stations between the fin's intersection points
+    end where the fin's surfaces meet the pod in those planes, on both exact surfaces (the
+    angle interpolated between the points put them up to 4e-3 of the airplane off the
+    fin); the intersection points themselves stay rows' ends, bit for bit."""
+    from juncture.intersect import intersect_body
+    from juncture.model import CircularBody, WingLike
+    from juncture.surface.component_networks import nacelle_network
+
+    pod = CircularBody("pod 1", np.array([0.0, 3.0, 9.0, 14.0]),
+                       np.array([0.6, 1.2, 1.2, 0.3]), origin=np.array([50.0, 12.0, 0.0]))
+    x = np.array([0.0, 10.0, 30.0, 60.0, 100.0])
+    half = np.array([0.0, 3.0, 5.5, 4.0, 0.2])
+    fin = WingLike("fin 1", "fin", [[52.0, 12.0, 0.5], [54.0, 12.0, 4.0]], [4.5, 2.5], x,
+                   np.stack([half, 0.8 * half]), mirrored=False)
+    lines = {}
+    for side in ("upper", "lower"):
+        lines[side] = intersect_body(fin, pod, side)
+        assert lines[side].found.all()
+    net = nacelle_network(pod, [(lines["upper"], lines["lower"], fin)], n_points=19)
+    for side, col in (("upper", -1), ("lower", 0)):
+        pts = lines[side].points
+        for p in pts:
+            assert any(np.array_equal(p, q) for q in net[:, col])
+        ends = net[:, col]
+        between = (ends[:, 0] > pts[:, 0].min() + 1e-9) & (ends[:, 0] < pts[:, 0].max() - 1e-9)
+        given = np.array([any(np.array_equal(e, p) for p in pts) for e in ends])
+        rows = ends[between & ~given]
+        assert len(rows) >= 2                       # pod stations between the points
+        span = rows[:, fin.span_axis]
+        le = fin.point(span, 0.0, side, extrapolate=True)[:, 0]
+        te = fin.point(span, 1.0, side, extrapolate=True)[:, 0]
+        on_fin = fin.point(span, (rows[:, 0] - le) / (te - le), side, extrapolate=True)
+        np.testing.assert_allclose(on_fin, rows, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(pod.radial_error(rows), 0.0, atol=1e-9)
+
+
 def test_a_curve_a_hair_beside_a_section_is_not_inserted():
     """A fin standing 0.024 ft inboard of a wing section 13.5 ft from the next (a generated
     airplane): its traced curve beside the section made a row of slivers and edges in more

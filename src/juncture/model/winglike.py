@@ -305,9 +305,14 @@ class WingLike:
     def with_sections(self, span, extrapolate=False):
         """A copy with extra sections inserted at the given span stations (linear loft).
 
-        The new sections lie exactly on the lofted surface at the input stations: their leading
-        edges, chords and ordinates are those of the straight lofting lines. Stations that
-        coincide with existing sections are ignored.
+        The new sections lie exactly on the lofted surface: their leading edges, chords and
+        ordinates are those of the straight lofting lines, and their chordwise curves are the
+        blends of their neighbours' curves (a PCHIP through the blended ordinates is not the
+        blend of the PCHIPs: the transport's kind of section, 4 points, put a root continued
+        into the fuselage 6e-3 ft off the extended surface between stations), so the copy's
+        :meth:`point` is this one's, extrapolated beyond the root or tip too. A copy made from
+        the ordinates alone (a deck written and read again) has curves through them. Stations
+        that coincide with existing sections are ignored.
         """
         st = self.span_stations
         new = np.setdiff1d(np.asarray(span, float), st)
@@ -331,9 +336,14 @@ class WingLike:
         def merged(a, b):
             return np.concatenate([a, b])[order]
 
-        return WingLike(self.name, self.kind, merged(self.le, le), merged(self.chord, chord),
-                        self.x_over_c, merged(self.upper, thick[0]), merged(self.lower, thick[1]),
-                        merged(self.camber, cam), self.mirrored, self.chordwise)
+        out = WingLike(self.name, self.kind, merged(self.le, le), merged(self.chord, chord),
+                       self.x_over_c, merged(self.upper, thick[0]), merged(self.lower, thick[1]),
+                       merged(self.camber, cam), self.mirrored, self.chordwise)
+        for side in ("upper", "lower"):
+            t, coefs = self._chord_cubics(side)
+            blend = (1 - lam) * coefs[..., k] + lam * coefs[..., k + 1]
+            out._poly[side] = (t, np.concatenate([coefs, blend], axis=-1)[..., order])
+        return out
 
     def networks(self):
         """Surface networks of the component, each oriented with outward normals.

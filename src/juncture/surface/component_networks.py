@@ -254,8 +254,11 @@ def nacelle_network(pod, pylon_inters, n_points=None):
     Parameters
     ----------
     pod : CircularBody
-    pylon_inters : list of (outboard BodyIntersection, inboard BodyIntersection)
-        Each pylon's intersections with this pod.
+    pylon_inters : list of (outboard BodyIntersection, inboard BodyIntersection[, WingLike])
+        Each pylon's intersections with this pod, and the pylon: with it the arcs at pod
+        stations between its intersection points end where its surfaces meet the pod in
+        those planes (:func:`juncture.intersect.stations.plane_points`), on the exact curve,
+        not at an angle interpolated between the points.
     n_points : int, optional
         Points per cross-section (default 2 * 19 - 1).
 
@@ -272,7 +275,7 @@ def nacelle_network(pod, pylon_inters, n_points=None):
     n = int(n_points or 37)
     xg = refined_stations(pod)
     spans, ends = [], []
-    for out_i, in_i in pylon_inters:
+    for out_i, in_i, *wing in pylon_inters:
         ok_o, ok_i = out_i.found, in_i.found
         if not ok_o.any() or not ok_i.any():
             continue
@@ -283,13 +286,14 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         th_i = np.arctan2(in_i.points[ok_i, 2] - ci[:, 1], in_i.points[ok_i, 1] - ci[:, 0])
         order = np.argsort(in_i.points[ok_i, 0])
         th_i_at = np.interp(xo, in_i.points[ok_i, 0][order], np.unwrap(th_i[order]))
-        spans.append((xo, th_o, th_i_at))
+        spans.append((xo, th_o, th_i_at, wing[0] if wing else None, out_i, in_i))
         ends.append((out_i.points[ok_o], in_i.points[ok_i]))
     xs = _stations(xg, [p[:, 0] for e in ends for p in e]) if spans else xg
     # Full circles start and end at the top, so the arcs under a pylon continue them smoothly.
     lo = np.full(xs.size, 0.5 * np.pi)
     hi = np.full(xs.size, 2.5 * np.pi)
-    for xo, th_o, th_i in spans:
+    exact = []
+    for xo, th_o, th_i, wing, out_i, in_i in spans:
         order = np.argsort(xo)
         rows = _nearest(xs, xo)
         inside = (np.arange(xs.size) >= rows.min()) & (np.arange(xs.size) <= rows.max())
@@ -297,9 +301,19 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         lo[inside] = np.interp(xs[inside], xo[order], np.mod(th_i[order], 2 * np.pi))
         hi[inside] = np.interp(xs[inside], xo[order], np.mod(th_o[order], 2 * np.pi)) + \
             2 * np.pi
+        if wing is not None:
+            at = np.flatnonzero(inside)
+            for inter, side, col in ((in_i, "lower", 0), (out_i, "upper", -1)):
+                p = _exact_at(wing, pod, side, inter, xs[at])
+                ok = np.isfinite(p[:, 0])
+                angle = np.mod(_angle(pod, p[ok]), 2 * np.pi)
+                (lo if col == 0 else hi)[at[ok]] = angle + (0.0 if col == 0 else 2 * np.pi)
+                exact.append((at[ok], col, p[ok]))
     t = np.linspace(0.0, 1.0, n)
     theta = lo[:, None] + t[None, :] * (hi - lo)[:, None]
     net = pod.point(xs[:, None], theta)
+    for rows, col, pts in exact:
+        net[rows, col] = pts
     # Where a station is an intersection point's x, its arc ends exactly at that point, so
     # the pylon's root line and the pod share these points bit for bit.
     for outboard, inboard in ends:
@@ -308,6 +322,21 @@ def nacelle_network(pod, pylon_inters, n_points=None):
             pts = pts[(pts[:, 0] >= lo_x) & (pts[:, 0] <= hi_x)]  # where the arc is open
             net[_nearest(xs, pts[:, 0]), col] = pts
     return net
+
+
+def _exact_at(wing, pod, side, inter, x):
+    """(len(x), 3) where ``wing``'s ``side`` meets ``pod`` in the planes ``x`` between two
+    of its intersection points ``inter`` (NaN elsewhere)."""
+    from ..intersect.stations import plane_points
+
+    pts = np.where(inter.found[:, None], inter.points, np.nan)
+    return plane_points(wing, pod, side, pts, x, either=True)
+
+
+def _angle(pod, p):
+    """(k,) the angles of the points ``p`` on the circular ``pod`` round its axis."""
+    c = pod.center_at(p[:, 0])
+    return np.arctan2(p[:, 2] - c[:, 1], p[:, 1] - c[:, 0])
 
 
 #: Stations of a pod's network closer than this share of its length are one station.

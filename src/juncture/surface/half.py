@@ -190,8 +190,7 @@ def _planar_half(v, tri, loop, centre, normal, axes, first, min_angle):
     step = np.linalg.norm(np.diff(rim, axis=0), axis=1)
     h = float(np.median(step))
     span = float(np.linalg.norm(rim[0] - rim[-1]))
-    k = max(1, int(np.ceil(span / max(h, 1e-300))))
-    along = rim[-1] + np.linspace(0.0, 1.0, k + 1)[1:-1, None] * (rim[0] - rim[-1])
+    along = rim[-1] + _spacing(span, step[-1], step[0], h)[:, None] * (rim[0] - rim[-1])
     along[:, 1] = 0.0
     inner = np.setdiff1d(np.unique(tri), loop)
     inner = inner[v[inner, 1] > 0.5 * h]
@@ -209,6 +208,35 @@ def _planar_half(v, tri, loop, centre, normal, axes, first, min_angle):
     glob = np.concatenate([chain, first + np.arange(len(along)), inner,
                            first + len(along) + np.arange(len(extra))])
     return np.concatenate([along, extra]), glob[local]
+
+
+def _spacing(span, first, last, h):
+    """(k,) fractions strictly between 0 and 1 of points on a segment of length ``span``:
+    the first piece about ``first`` long, the last about ``last`` (the rim's pieces that meet
+    the segment's ends, so the triangle in each corner has two sides alike: a thin
+    section's trailing edge meets y = 0 at a few degrees, and a point on y = 0 nearer the
+    corner than the rim's next point made a sliver), turning towards ``h`` by half the
+    distance from the nearer end."""
+    def size(u):
+        end, d = (first, u) if u <= 0.5 * span else (last, max(span - u, 0.0))
+        return end + float(np.clip(h - end, -0.5 * d, 0.5 * d))
+
+    out = [size(0.0)]
+    while out[-1] + size(out[-1]) < span:
+        out.append(out[-1] + size(out[-1]))
+    out = np.asarray(out)
+    if out[-1] >= span:                      # one piece: no point between
+        return np.zeros(0)
+    step = size(out[-1])
+    if span - out[-1] >= 0.5 * step:         # the last gap is a piece as it is
+        return out / span
+    # else stretched to the far end: the last gap scaled to a whole piece, or the last
+    # point left out and the rest spread, whichever stretches less
+    shrink = span / (out[-1] + step)
+    spread = span / out[-1]
+    if spread - 1.0 < 1.0 / shrink - 1.0:
+        return out[:-1] * spread / span
+    return out * shrink / span
 
 
 def _kept_chain(loop, y):
