@@ -196,8 +196,10 @@ def test_a_nose_given_by_two_stations_is_meshed_on_the_model():
 def test_seams_within_one_body_are_lifted_alike(transport):
     """``seam_lift(...).agree``: the seams between the fuselage's blocks (and their images)
     lie within one surface, lifted alike from both sides, so new points near them are lifted
-    in full; no intersection line is (its two sides lift apart), so new points near one are
-    lifted only part of the way (remesh.TAPER)."""
+    in full; an intersection line's two sides lift apart, so new points near one are lifted
+    only part of the way (remesh.TAPER), but where a piece of it is straight on both surfaces
+    (a flat-sided pylon on a pod's cylinder, between a pod station's exact point and the
+    next), its middle stays where it is on both."""
     from juncture.surface.chart import patch_edges
     from juncture.surface.splits import seam_lift
 
@@ -220,7 +222,10 @@ def test_seams_within_one_body_are_lifted_alike(transport):
     within_body = seam & ~cap & (names[:, 0] == "body") & (names[:, 1] == "body")
     crossing = seam & (names[:, 0] != names[:, 1])
     assert within_body.sum() > 50 and agree[within_body].all()
-    assert crossing.sum() > 100 and not agree[crossing].any()
+    assert crossing.sum() > 100 and agree[crossing].mean() < 0.01
+    a, b = und[two][crossing & agree].T
+    mid = 0.5 * (assembled.vertices[a] + assembled.vertices[b])
+    np.testing.assert_array_equal(move(a, b, mid), mid)
 
 
 @pytest.mark.slow  # one held-out airplane (> 6 s): make test-all
