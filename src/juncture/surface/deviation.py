@@ -167,7 +167,7 @@ def bent(patch, splits, vertices, pts, gid, local, shape):
     # measured against where a new point there would go: near a free seam only part of the
     # way (lifted), or the gap between the ends, held there, and the full lift never shrank
     # (a wing root's trailing edge next to its strip was split down to 1e-6 ft)
-    onto = tapered(patch, on, onto, mid)
+    onto = tapered(patch, on, onto, mid, under)
     sag = np.linalg.norm(onto - 0.5 * (a + b), axis=1)
     h = np.linalg.norm(b - a, axis=1)
     size = np.broadcast_to(size, h.shape)
@@ -192,13 +192,18 @@ def lifted(patch, points, under, query=None):
     full = patch.lift(points, patch.ids[patch.tri[under]], patch.component, patch.surface)
     if query is None or not len(points):
         return full
-    return tapered(patch, points, full, query)
+    return tapered(patch, points, full, query, under)
 
 
-def tapered(patch, points, full, query):
+def tapered(patch, points, full, query, under=None):
     """``points`` moved towards ``full`` (their lift) in full, or near the patch's free boundary
-    (chart points ``query``) by the share :func:`lifted` describes."""
+    (chart points ``query``) by the share :func:`lifted` describes; with the chart triangles
+    ``under`` them, a lift out of the patch's solid (along its assembled triangle's normal)
+    rises from a narrow valley's edges no steeper than ``patch.valley``
+    (:func:`juncture.surface.patches.taper`)."""
     move = np.linalg.norm(full - points, axis=1)
+    outward = None if under is None or patch.valley is None or patch.normals is None else \
+        np.einsum("ij,ij->i", full - points, patch.normals[under]) > 0.0
 
     def sag(edges, row, t):         # on the straight 3-D edges, from their own triangles
         a, b = patch.xyz[edges[row, 0]], patch.xyz[edges[row, 1]]
@@ -207,7 +212,7 @@ def tapered(patch, points, full, query):
         return np.linalg.norm(patch.lift(on, corners, patch.component, patch.surface) - on,
                               axis=1)
 
-    w = taper(patch, query, move, 1.0 / TAPER, sag)
+    w = taper(patch, query, move, 1.0 / TAPER, sag, outward)
     return points + w[:, None] * (full - points)
 
 

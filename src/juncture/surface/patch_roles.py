@@ -155,9 +155,18 @@ def mark_slopes(charted, mesh):
     them: a canard meeting the fuselage at 90 deg lets the fuselage's points rise onto its
     circle within 2.4 times the lift of the seam, where 1 / TAPER kept points 10 times their
     lift away from it short of it (by a tenth of the radius where a block's facets span a
-    quarter of its circle)."""
-    on = [p for p in charted if p.component in getattr(p.lift, "bodies", ())]
-    if not on:
+    quarter of its circle).
+
+    ``patch.valley`` of every lifted patch, body or not, with such edges (else None): per
+    boundary edge, where two surfaces meet in a valley (:func:`_valleys`) whose wedge of air
+    is so narrow that a quarter of it rises less than 1 / TAPER (under 22.8 deg), tan of
+    that quarter (at least 1 / (TAPER :data:`NARROWEST`)), else inf: a lift out of the
+    patch's solid there, towards the other surface, rises no steeper (at 1 / TAPER each, a
+    low wing's upper surface passing just under a narrowing tail cone and the fuselage's
+    block, meeting at 2.9 deg, crossed); one into it, away from the other surface, as
+    before."""
+    lifted = [p for p in charted if p.lift is not None]
+    if not lifted:
         return
     from .chart import edge_sides, patch_edges
 
@@ -168,9 +177,34 @@ def mark_slopes(charted, mesh):
     normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
     cos = np.clip(np.einsum("ij,ij->i", normal[a], normal[b]), -1.0, 1.0)
-    steep = np.where(uses == 2, np.clip(np.tan((np.pi - np.arccos(cos)) / 4.0),
-                                        1.0 / TAPER, 1e3), 1.0 / TAPER)
-    for patch in on:            # its boundary edges among the mesh's (all of them there)
+    rise = np.tan((np.pi - np.arccos(cos)) / 4.0)
+    steep = np.where(uses == 2, np.clip(rise, 1.0 / TAPER, 1e3), 1.0 / TAPER)
+    narrow = (uses == 2) & (rise < 1.0 / TAPER) & _valleys(mesh, und, a, b, normal)
+    valley = np.where(narrow, np.maximum(rise, 1.0 / (TAPER * NARROWEST)), np.inf)
+    for patch in lifted:        # its boundary edges among the mesh's (all of them there)
+        body = patch.component in getattr(patch.lift, "bodies", ())
+        if not body and not narrow.any():
+            continue
         ends = np.sort(patch.ids[patch.edges], axis=1)
         _, at = unique_pairs(np.concatenate([und, ends]), return_inverse=True)
-        patch.slope = steep[at[len(und):]]
+        at = at[len(und):]
+        if body:
+            patch.slope = steep[at]
+        elif np.isfinite(valley[at]).any():
+            patch.valley = valley[at]
+
+
+#: The slope a lift out of its patch's solid may rise at from a seam in the narrowest
+#: valleys is at least 1 / (TAPER NARROWEST) (:func:`mark_slopes`).
+NARROWEST = 100.0
+
+
+def _valleys(mesh, und, a, b, normal):
+    """(e,) bool over the unique edges ``und`` (triangle rows ``a``, ``b`` on each side,
+    ``normal`` per triangle): the second triangle's third corner lies on the outer side of
+    the first's plane (the surface folds outwards there: the wedge of air between them is
+    pi less the angle between their normals, where at a ridge it is pi more)."""
+    t = np.asarray(mesh.triangles)[b]
+    third = np.argmax((t != und[:, :1]) & (t != und[:, 1:]), axis=1)
+    corner = mesh.vertices[t[np.arange(len(t)), third]]
+    return np.einsum("ij,ij->i", normal[a], corner - mesh.vertices[und[:, 0]]) > 0.0

@@ -75,6 +75,7 @@ class Patch:
     near: tuple | None = None            # (k-d tree of samples of the free edges, spacing / 2,
     #                                      each sample's slope and sag)
     slope: np.ndarray | None = None      # per boundary edge: how steeply a lift may rise from it
+    valley: np.ndarray | None = None     # per boundary edge: how steeply one outwards may
     keys: list | None = None             # boundary edges as (global a, global b), a < b
     spread: float = 1.0                  # how much the chart's scale varies (spread())
     pts: np.ndarray | None = None        # chart coordinates of the current triangulation's
@@ -341,7 +342,7 @@ def area3(p):
     return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
 
 
-def taper(patch, query, move, slope, sag=None):
+def taper(patch, query, move, slope, sag=None, outward=None):
     """(k,) the share of its lift (``move``, (k,)) each chart point takes. Near the patch's
     free boundary edges (``patch.free``: seams whose two sides do not lift alike, straight
     chords of an exact curve) a point is left short of its exact surface by at most the
@@ -354,7 +355,9 @@ def taper(patch, query, move, slope, sag=None):
     quarter of its circle). The distance is that to the nearest
     of :data:`SAMPLES` points spread along those edges (a k-d tree built once per patch)
     less half their spacing: never more than the true distance, so a point near a seam is
-    never lifted further than its share."""
+    never lifted further than its share. ``outward`` ((k,) bool: lifts out of the patch's
+    solid): those rise no steeper than ``patch.valley`` either (a narrow valley's edges,
+    :func:`juncture.surface.patch_roles.mark_slopes`)."""
     from scipy.spatial import cKDTree
 
     free = np.ones(len(patch.edges), bool) if patch.free is None else patch.free
@@ -370,15 +373,20 @@ def taper(patch, query, move, slope, sag=None):
         t = t / np.repeat(count, count + 1)
         at = a[row] + t[:, None] * (b - a)[row]
         steep = np.full(len(edges), slope) if patch.slope is None else patch.slope[free]
+        valley = None if patch.valley is None else \
+            np.append(np.minimum(steep, patch.valley[free])[row], np.inf)
         deep = np.full(len(at), np.inf) if sag is None else _seam_sag(sag(edges, row, t), row)
         patch.near = (cKDTree(at), 0.5 * float((length / count).max()),
-                      np.append(steep[row], np.inf), np.append(deep, 0.0))
-    tree, half, steep, deep = patch.near
+                      np.append(steep[row], np.inf), np.append(deep, 0.0), valley)
+    tree, half, steep, deep, valley = patch.near
+    out = None if valley is None or outward is None or not np.any(outward) else outward
     reach = np.minimum(float(move.max(initial=0.0)), deep[:-1].max())
-    far = float(reach / steep[:-1].min()) + half                # beyond: lifted in full
+    least = steep[:-1].min() if out is None else valley[:-1].min()
+    far = float(reach / least) + half                           # beyond: lifted in full
     dist, nearest = tree.query(query, distance_upper_bound=far)
     dist = np.maximum(dist - half, 0.0)
-    short = np.maximum(np.minimum(move, deep[nearest]) - dist * steep[nearest], 0.0)
+    rate = steep[nearest] if out is None else np.where(out, valley[nearest], steep[nearest])
+    short = np.maximum(np.minimum(move, deep[nearest]) - dist * rate, 0.0)
     return np.clip(1.0 - short / np.maximum(move, 1e-300), 0.0, 1.0)
 
 
