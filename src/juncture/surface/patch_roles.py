@@ -157,14 +157,15 @@ def mark_slopes(charted, mesh):
     lift away from it short of it (by a tenth of the radius where a block's facets span a
     quarter of its circle).
 
-    ``patch.valley`` of every lifted patch, body or not, with such edges (else None): per
+    ``patch.valley`` of every other lifted patch (a wing's) with such edges (else None): per
     boundary edge, where two surfaces meet in a valley (:func:`_valleys`) whose wedge of air
     is so narrow that a quarter of it rises less than 1 / TAPER (under 22.8 deg), tan of
     that quarter (at least 1 / (TAPER :data:`NARROWEST`)), else inf: a lift out of the
-    patch's solid there, towards the other surface, rises no steeper (at 1 / TAPER each, a
-    low wing's upper surface passing just under a narrowing tail cone and the fuselage's
-    block, meeting at 2.9 deg, crossed); one into it, away from the other surface, as
-    before."""
+    patch's solid there, towards the other surface, rises no steeper (a low wing's upper
+    surface passing just under a narrowing tail cone met the fuselage's block at 2.9 deg:
+    lifted up at 1 / TAPER, its fan facets crossed the block); one into it, away from the
+    other surface, as before. A body keeps its slopes (its lift is most of the volume; the
+    held retry mends where it alone crosses)."""
     lifted = [p for p in charted if p.lift is not None]
     if not lifted:
         return
