@@ -308,7 +308,7 @@ class WingLike:
         The new sections lie exactly on the lofted surface: their leading edges, chords and
         ordinates are those of the straight lofting lines, and their chordwise curves are the
         blends of their neighbours' curves (a PCHIP through the blended ordinates is not the
-        blend of the PCHIPs: the transport's kind of section, 4 points, put a root continued
+        blend of the PCHIPs: a generated airplane's 4-point sections put a root continued
         into the fuselage 6e-3 ft off the extended surface between stations), so the copy's
         :meth:`point` is this one's, extrapolated beyond the root or tip too. A copy made from
         the ordinates alone (a deck written and read again) has curves through them. Stations

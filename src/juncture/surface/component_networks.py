@@ -280,10 +280,7 @@ def nacelle_network(pod, pylon_inters, n_points=None):
         if not ok_o.any() or not ok_i.any():
             continue
         xo = out_i.points[ok_o, 0]
-        c = pod.center_at(xo)
-        th_o = np.arctan2(out_i.points[ok_o, 2] - c[:, 1], out_i.points[ok_o, 1] - c[:, 0])
-        ci = pod.center_at(in_i.points[ok_i, 0])
-        th_i = np.arctan2(in_i.points[ok_i, 2] - ci[:, 1], in_i.points[ok_i, 1] - ci[:, 0])
+        th_o, th_i = _angle(pod, out_i.points[ok_o]), _angle(pod, in_i.points[ok_i])
         order = np.argsort(in_i.points[ok_i, 0])
         th_i_at = np.interp(xo, in_i.points[ok_i, 0][order], np.unwrap(th_i[order]))
         spans.append((xo, th_o, th_i_at, wing[0] if wing else None, out_i, in_i))

@@ -217,9 +217,9 @@ def _spacing(span, first, last, h):
     section's trailing edge meets y = 0 at a few degrees, and a point on y = 0 nearer the
     corner than the rim's next point made a sliver), turning towards ``h`` by half the
     distance from the nearer end."""
-    def size(u):
+    def size(u):                             # a thousandth of the span at least
         end, d = (first, u) if u <= 0.5 * span else (last, max(span - u, 0.0))
-        return end + float(np.clip(h - end, -0.5 * d, 0.5 * d))
+        return max(end + float(np.clip(h - end, -0.5 * d, 0.5 * d)), 1e-3 * span)
 
     out = [size(0.0)]
     while out[-1] + size(out[-1]) < span:
