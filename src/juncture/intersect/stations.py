@@ -138,8 +138,8 @@ def _lines_at(wing, side, f):
     """A wing-like component whose lofting lines (both sides) are ``wing``'s ``side``
     lofting lines at the chord fractions ``f`` (sorted): its sections' offsets are the
     model's own section curves there (:meth:`~juncture.model.WingLike.point`), as a
-    camber line of zero thickness. (:meth:`~juncture.model.WingLike.with_chord_stations`
-    interpolates camber and thickness apart, a curve 1e-3 of the thickness off.)"""
+    camber line of zero thickness (only the lines at ``f`` are asked for: the other
+    chord fractions' curves of this copy are not the model's)."""
     from ..model import WingLike
 
     span = wing.span_stations

@@ -269,25 +269,54 @@ class WingLike:
     def with_chord_stations(self, x_over_c):
         """A copy with extra chordwise stations [% chord], on the present section curves.
 
-        The ordinates at new stations come from the section's own chordwise interpolation, so
-        the sections pass through the same points; between them the (PCHIP) curves through
-        the denser points differ from the original ones by O(h^4). Input stations are kept.
+        The new stations' offsets are the present section curves' there, and the copy keeps
+        those curves (each cubic piece split at the new stations), so its :meth:`point` is
+        this one's: refining the lofting lines does not move the surface. (The camber there
+        is the camber's own interpolation and the half-thicknesses make up the offsets;
+        interpolating camber and thickness apart put the points up to 1e-3 of the thickness
+        off.) Input stations are kept, their ordinates bit for bit (a sharp edge stays one
+        line on both surfaces).
         """
         xc = np.union1d(self.x_over_c, np.asarray(x_over_c, float))
         if xc.size == self.n_stations:
             return self
         f = xc / 100.0
-        up, lo, cam = (interpolate_chordwise(self.x_over_c, a, f, self.chordwise)
-                       for a in (self.upper, self.lower, self.camber))
-        # The input stations keep their own ordinates, bit for bit (not the interpolation's
-        # round-off): a sharp edge stays one line on both surfaces.
+        cam = interpolate_chordwise(self.x_over_c, self.camber, f, self.chordwise)
+        c = self.chord[:, None]
+        up, lo = (self._section_offsets(side, f) for side in ("upper", "lower"))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            up = np.where(c > 0, 100.0 * (up - cam) / np.where(c > 0, c, 1.0),
+                          interpolate_chordwise(self.x_over_c, self.upper, f, self.chordwise))
+            lo = np.where(c > 0, 100.0 * (cam - lo) / np.where(c > 0, c, 1.0),
+                          interpolate_chordwise(self.x_over_c, self.lower, f, self.chordwise))
         at = np.searchsorted(xc, self.x_over_c)
         for new, old in ((up, self.upper), (lo, self.lower), (cam, self.camber)):
             new[..., at] = old
         # Round-off can leave -1e-17 where a thickness returns to zero.
         args = (np.maximum(up, 0.0), np.maximum(lo, 0.0), cam)
-        return WingLike(self.name, self.kind, self.le, self.chord, xc, *args, self.mirrored,
-                        self.chordwise)
+        out = WingLike(self.name, self.kind, self.le, self.chord, xc, *args, self.mirrored,
+                       self.chordwise)
+        for side in ("upper", "lower"):
+            out._poly[side] = (f, self._split_cubics(side, f))
+        return out
+
+    def _section_offsets(self, side, f):
+        """(n_sections, len(f)) every section curve's offset at the chord fractions ``f``."""
+        t, coefs = self._chord_cubics(side)
+        i = np.clip(np.searchsorted(t, f, side="right") - 1, 0, t.size - 2)
+        h = (f - t[i])[:, None]
+        c3, c2, c1, c0 = coefs[:, i]
+        return (((c3 * h + c2) * h + c1) * h + c0).T
+
+    def _split_cubics(self, side, f):
+        """The section curves' cubic pieces (as :meth:`_chord_cubics`) on the breaks ``f``
+        (the present ones among them): each piece the present one about its new start."""
+        t, coefs = self._chord_cubics(side)
+        i = np.clip(np.searchsorted(t, f[:-1], side="right") - 1, 0, t.size - 2)
+        d = (f[:-1] - t[i])[:, None]
+        c3, c2, c1, c0 = coefs[:, i]
+        return np.stack([c3, c2 + 3.0 * c3 * d, c1 + (2.0 * c2 + 3.0 * c3 * d) * d,
+                         ((c3 * d + c2) * d + c1) * d + c0])
 
     def extended_to(self, span):
         """A copy whose lofting lines continue straight beyond the root to ``span``.
