@@ -174,18 +174,18 @@ class CompleteOptions:
     min_lofting_lines : int
         With ``keep_area``: a wing with fewer chordwise stations gets extra ones, each input
         interval divided evenly, so the fuselage is re-designed at that many fillet stations.
-        The new stations lie on the section curves, but the curves through them differ a
-        little between stations (PCHIP refitted), so this changes the wing: off (0) by
-        default, and rarely needed (the re-designed body follows the compensation between
-        fillet stations; the PDAS deck's three lofting lines already restore its drag to
-        2.3e-4).
+        The new stations lie on the section curves and the wing keeps those curves
+        (:meth:`~juncture.model.WingLike.with_chord_stations`), so its surface does not
+        change. Off (0) by default, and rarely needed (the re-designed body follows the
+        compensation between fillet stations; the PDAS deck's three lofting lines already
+        restore its drag to 2.3e-4).
     refine : int
         Output density: every chordwise interval of every wing-like component and the point
         spacing of every circular body's and nacelle's cross-sections divided into
         ``refine`` (1: the deck's own points; the fuselage stations stay the deck's and the
         intersections'). Body points lie on the body; the wing-like components get extra
-        chord stations on their section curves, refitted through them as
-        ``min_lofting_lines`` does. For meshes whose volume and area converge
+        chord stations on their section curves, which they keep, as ``min_lofting_lines``
+        does. For meshes whose volume and area converge
         (``juncture mesh --refine``).
     """
 
