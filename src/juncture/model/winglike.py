@@ -283,7 +283,8 @@ class WingLike:
         f = xc / 100.0
         cam = interpolate_chordwise(self.x_over_c, self.camber, f, self.chordwise)
         c = self.chord[:, None]
-        up, lo = (self._section_offsets(side, f) for side in ("upper", "lower"))
+        split = {side: self._split_cubics(side, f) for side in ("upper", "lower")}
+        up, lo = (_values_at_breaks(split[side], f) for side in ("upper", "lower"))
         with np.errstate(invalid="ignore", divide="ignore"):
             up = np.where(c > 0, 100.0 * (up - cam) / np.where(c > 0, c, 1.0),
                           interpolate_chordwise(self.x_over_c, self.upper, f, self.chordwise))
@@ -297,16 +298,8 @@ class WingLike:
         out = WingLike(self.name, self.kind, self.le, self.chord, xc, *args, self.mirrored,
                        self.chordwise)
         for side in ("upper", "lower"):
-            out._poly[side] = (f, self._split_cubics(side, f))
+            out._poly[side] = (f, split[side])
         return out
-
-    def _section_offsets(self, side, f):
-        """(n_sections, len(f)) every section curve's offset at the chord fractions ``f``."""
-        t, coefs = self._chord_cubics(side)
-        i = np.clip(np.searchsorted(t, f, side="right") - 1, 0, t.size - 2)
-        h = (f - t[i])[:, None]
-        c3, c2, c1, c0 = coefs[:, i]
-        return (((c3 * h + c2) * h + c1) * h + c0).T
 
     def _split_cubics(self, side, f):
         """The section curves' cubic pieces (as :meth:`_chord_cubics`) on the breaks ``f``
@@ -399,3 +392,12 @@ class WingLike:
         te = self.le.copy()
         te[:, 0] += self.chord
         return np.concatenate([self.le, te[::-1], self.le[:1]])
+
+
+def _values_at_breaks(coefs, f):
+    """(n_sections, len(f)) the piecewise cubics ``coefs`` ((4, len(f) - 1, n_sections), in
+    f - f[i]) at their breaks ``f``: each piece's start, and the last piece's end."""
+    c3, c2, c1, c0 = coefs[:, -1]
+    h = f[-1] - f[-2]
+    end = ((c3 * h + c2) * h + c1) * h + c0
+    return np.concatenate([coefs[3], end[None]]).T
