@@ -311,7 +311,7 @@ def _followed(geometry, surface, lift):
     from .lift import surface_lift
     from .seam_curves import follow_curves
 
-    out = follow_curves(surface, curves)
+    out = follow_curves(surface, curves, fixed=_line_points(geometry, surface, lift) != 0)
     return (surface, lift) if out is surface else (out, surface_lift(geometry, out))
 
 

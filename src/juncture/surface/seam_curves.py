@@ -248,7 +248,7 @@ def curve_edges(edges, curves):
     return np.unique(e, axis=0)
 
 
-def follow_curves(mesh, curves, sag=SAG):
+def follow_curves(mesh, curves, sag=SAG, fixed=None):
     """``mesh`` (a :class:`~juncture.surface.assemble.SurfaceMesh`) with its edges on the
     exact ``curves`` split until each piece's chord lies within ``sag`` times the mesh's
     size of the curve at its middle: the new points lie on the curve (on both exact
@@ -257,8 +257,10 @@ def follow_curves(mesh, curves, sag=SAG):
     Before any chart is made: a chart's boundary then follows the curve, and points placed
     beside it cannot fall outside it (split points moved off their chord only later folded
     the triangles next to a canted fin's root, 0.2 ft from a 5 ft chord). A point and its
-    mirror image in y = 0 are made as mirror images, bit for bit. Returns ``mesh`` itself
-    when nothing is split."""
+    mirror image in y = 0 are made as mirror images, bit for bit. A grid point past which the
+    curve bulges moves off it unless it is ``fixed`` ((n,) bool: on an intersection, corner
+    or split line; :mod:`juncture.surface.relocate`). Returns ``mesh`` itself when nothing
+    is split."""
     from .mirror import FLIP, mirror_map
 
     if curves is None or sag is None:
@@ -289,55 +291,87 @@ def follow_curves(mesh, curves, sag=SAG):
             found[key] = ((fractions, flipped) if ma < mb else
                           (1.0 - fractions[::-1], flipped[::-1]))
             partner[key], partner[(a, b)] = (a, b), key
-    return _fanned(mesh, found, partner)
+    from .relocate import free_vertices
+
+    return _fanned(mesh, found, partner, free_vertices(mesh, fixed), curves)
 
 
-def _fanned(mesh, found, partner):
+def _fanned(mesh, found, partner, free=None, curves=None):
     """The mesh with the points ``found`` ({edge: (fractions, points)}) on its edges, the
-    triangles on them fanned over them; an edge whose fan would turn a triangle over (a point
-    past the corner across from it: the curve bulging into a thin triangle of a flat panel)
-    keeps its chord, and so does its mirror image (``partner``)."""
-    from .assemble import SurfaceMesh
-    from .splits import fans
+    triangles on them fanned over them. Where a fan would turn a triangle over (a point past
+    the corner across from it: the curve bulging into a thin triangle), that corner moves
+    off the curve where it is ``free`` (:mod:`juncture.surface.relocate`, onto the host of
+    the edge's curve among ``curves``); else the edge keeps its chord, and so does its
+    mirror image (``partner``)."""
+    from .relocate import normals, relocate
 
     vertices, tri = np.asarray(mesh.vertices, float), np.asarray(mesh.triangles)
-    n0 = np.cross(vertices[tri[:, 1]] - vertices[tri[:, 0]],
-                  vertices[tri[:, 2]] - vertices[tri[:, 0]])
+    n0 = normals(vertices, tri)
+    free = np.zeros(len(vertices), bool) if free is None or curves is None else free
     for _ in range(5):
         if not found:
             return mesh
-        ids, count = {}, len(vertices)
-        for key, (t, p) in found.items():
-            ids[key] = (t, np.arange(count, count + len(p)))
-            count += len(p)
-        xyz = np.concatenate([vertices] + [p for _, p in found.values()])
-        along = _Along(ids, count)
-        rows = np.flatnonzero(np.any([along.cut(tri[:, i], tri[:, (i + 1) % 3])
-                                      for i in range(3)], axis=0))
-        new = [fans(tri[r:r + 1], along) for r in rows]
-        bad = set()
-        for r, t in zip(rows.tolist(), new):
-            nt = np.cross(xyz[t[:, 1]] - xyz[t[:, 0]], xyz[t[:, 2]] - xyz[t[:, 0]])
-            if np.any(nt @ n0[r] <= 0.0):
-                v = tri[r]
-                bad |= {(min(v[i], v[(i + 1) % 3]), max(v[i], v[(i + 1) % 3]))
-                        for i in range(3)}
+        xyz, rows, new = _fans(vertices, tri, found)
+        keep = np.ones(len(tri), bool)
+        keep[rows] = False
+        src = np.concatenate([np.flatnonzero(keep),
+                              np.repeat(rows, [len(t) for t in new])])
+        out = np.concatenate([tri[keep]] + new)
+        if free.any():
+            xyz = relocate(xyz, out, n0[src], free, len(vertices),
+                           _hosts(found, curves, len(vertices)))
+        turned = np.einsum("ij,ij->i", normals(xyz, out), n0[src]) <= 0.0
+        if not turned.any():
+            break
+        bad = {(min(v[i], v[(i + 1) % 3]), max(v[i], v[(i + 1) % 3]))
+               for v in tri[np.unique(src[turned])].tolist() for i in range(3)}
         bad = {k for k in bad if k in found}
         if not bad:
-            break
+            return mesh
         for key in bad | {partner[k] for k in bad if k in partner}:
             found.pop(key, None)
     else:
         return mesh
-    keep = np.ones(len(tri), bool)
-    keep[rows] = False
-    counts = np.array([len(t) for t in new], int)
-    return SurfaceMesh(xyz, np.concatenate([tri[keep]] + new),
-                       np.concatenate([mesh.component[keep], np.repeat(mesh.component[rows],
-                                                                       counts)]),
-                       np.concatenate([mesh.surface[keep], np.repeat(mesh.surface[rows],
-                                                                     counts)]),
-                       mesh.components, mesh.surfaces, mesh.open_loops)
+    return _tagged(mesh, xyz, out, src)
+
+
+def _hosts(found, curves, first):
+    """``host(p)`` for :func:`~juncture.surface.relocate.relocate`: (error function, mirror
+    flip) of the curve on whose edge the new point ``p`` (from id ``first`` on, in the
+    order of ``found``) was put."""
+    keys = list(found)
+    which = curves.on_curve(np.array([a for a, _ in keys]), np.array([b for _, b in keys]))
+    line = np.repeat(which, [len(found[k][1]) for k in keys])
+
+    def host(p):
+        _, _, error, flip, _ = curves.lines[int(line[p - first])]
+        return error, flip
+    return host
+
+
+def _fans(vertices, tri, found):
+    """(points, rows, fans): the vertices with the ``found`` points appended, the rows of
+    ``tri`` with a found point on an edge, and each one's fan over them."""
+    from .splits import fans
+
+    ids, count = {}, len(vertices)
+    for key, (t, p) in found.items():
+        ids[key] = (t, np.arange(count, count + len(p)))
+        count += len(p)
+    xyz = np.concatenate([vertices] + [p for _, p in found.values()])
+    along = _Along(ids, count)
+    rows = np.flatnonzero(np.any([along.cut(tri[:, i], tri[:, (i + 1) % 3])
+                                  for i in range(3)], axis=0))
+    return xyz, rows, [fans(tri[r:r + 1], along) for r in rows]
+
+
+def _tagged(mesh, xyz, tri, src):
+    """A :class:`~juncture.surface.assemble.SurfaceMesh` of points ``xyz`` and triangles
+    ``tri``, each tagged as the row ``src`` of ``mesh`` it came from."""
+    from .assemble import SurfaceMesh
+
+    return SurfaceMesh(xyz, tri, mesh.component[src], mesh.surface[src], mesh.components,
+                       mesh.surfaces, mesh.open_loops)
 
 
 class _Along:
