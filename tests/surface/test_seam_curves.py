@@ -119,6 +119,22 @@ def test_without_the_curve_the_seam_cuts_its_chords(monkeypatch):
     assert count < 20 and midway > 1e-5 * size
 
 
+def test_the_curve_is_followed_round_a_thick_swept_leading_edge(monkeypatch):
+    """Beside a thick, highly swept root's leading edge the curve runs at a shallow angle to
+    the span, so a point of a chord there moves along the span onto the cylinder by more
+    than the chord's sag (9 % of a 2.7 ft edge on a held-out airplane). It is followed
+    (REACH); with the old reach of 5 % the seam kept its chord, far off the curve."""
+    import juncture.surface.seam_curves as sc
+
+    shape = dict(thickness=16.0, sweep_deg=60.0, z_root=-0.8)
+    cfg, surface = _mesh(**shape)
+    size = float(np.ptp(surface.vertices, axis=0).max())
+    assert _gaps(cfg, surface, "upper")[3] < 1e-6 * size
+    monkeypatch.setattr(sc, "REACH", 0.05)
+    cfg, surface = _mesh(**shape)
+    assert _gaps(cfg, surface, "upper")[3] > 1e-5 * size
+
+
 @pytest.mark.parametrize("side", ["upper", "lower"])
 def test_a_fin_s_point_goes_along_its_span_onto_the_cylinder(side):
     """A fin (span along z) standing on a cylinder of radius 3: a point near the top at a
