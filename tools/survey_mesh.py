@@ -107,7 +107,42 @@ def seam_sag(geometry, surface):
     if not len(d):
         return 0.0, "", 0, seconds
     i = int(np.argmax(d))
-    return float(d[i]), pts.where(i), int(len(d)), seconds
+    return float(d[i]), pts.where(i) + _near(cfg, pts.points[i]), int(len(d)), seconds
+
+
+def _near(cfg, point):
+    """What lies near a seam's worst point, for the survey's list: a fuselage joint where
+    two segments repeat a station (within 1 % of the body's length; where their sections
+    differ the rows there end at an interpolated angle, docs/mesh.md session 41), the plane
+    of symmetry (within 1e-3 of the longest body's length), or nothing ("")."""
+    import numpy as np
+
+    tags, size = [], 1.0
+    for comp in cfg:
+        x = np.asarray(getattr(comp, "x_global", ()), float)
+        if x.size < 2:
+            continue
+        size = max(size, float(np.ptp(x)))
+        joints = x[1:][x[1:] == x[:-1]]
+        close = joints[np.abs(joints - point[0]) <= 0.01 * np.ptp(x)]
+        if close.size:
+            tags.append(f"joint of {comp.name} at x={close[0]:.6g}")
+    if abs(point[1]) <= 1e-3 * size:
+        tags.append("at the plane of symmetry")
+    return f" [near: {'; '.join(tags)}]" if tags else ""
+
+    tags = []
+    for comp in cfg:
+        x = np.asarray(getattr(comp, "x_global", ()), float)
+        if x.size < 2:
+            continue
+        joints = x[1:][x[1:] == x[:-1]]
+        close = joints[np.abs(joints - point[0]) <= 0.01 * np.ptp(x)]
+        if close.size:
+            tags.append(f"joint of {comp.name} at x={close[0]:.6g}")
+    if abs(point[1]) <= 1e-3 * max(float(np.ptp(point)), 1.0):
+        tags.append("at the plane of symmetry")
+    return f" [near: {'; '.join(tags)}]" if tags else ""
 
 
 def sharp_corners(surface, angles, limit=5.0):
