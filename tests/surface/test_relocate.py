@@ -55,16 +55,16 @@ def _covered(points, tri, rim):
                 and uses.max() <= 2)
 
 
-def _mesh(points, tri):
+def _mesh(points, tri, name="body"):
     k = len(tri)
-    return SurfaceMesh(points, tri, np.zeros(k, int), np.zeros(k, int), ("body",), ("body",))
+    return SurfaceMesh(points, tri, np.zeros(k, int), np.zeros(k, int), (name,), (name,))
 
 
 def _curves(points, on):
     """SeamCurves with one curve on the plane through the vertices ``on``."""
     mask = np.zeros(len(points), bool)
     mask[on] = True
-    return SeamCurves(points, [(None, "upper", _plane, np.ones(3), mask)], 1.0)
+    return SeamCurves(points, [(None, "upper", _plane, np.ones(3), mask)], 1.0, ["body"])
 
 
 @settings(max_examples=60, deadline=None)
@@ -97,6 +97,16 @@ def test_a_fixed_grid_point_keeps_the_chord():
     assert len(moved.vertices) == len(pts) + 7
 
 
+def test_a_grid_point_of_another_component_stays():
+    """The curve's host is the body; a grid point of the wing beside the curve (its
+    surface the same plane here) is not taken onto the body: the edge keeps its chord."""
+    pts, tri = _patch(0.5, 0.02)
+    t, arc = _arc(0.1, 7)
+    mesh = _mesh(pts, tri, name="wing")
+    out = _fanned(mesh, {(0, 1): (t, arc)}, {}, free_vertices(mesh), _curves(pts, [0, 1]))
+    assert out is mesh
+
+
 def test_a_point_and_its_mirror_image_move_together():
     """A patch and its mirror image in y = 0 (turned so that both face +z): both grid
     points move, to mirror images bit for bit."""
@@ -118,7 +128,7 @@ def test_a_point_and_its_mirror_image_move_together():
     ref = normals(pts, tri)[src]
     assert np.any(np.einsum("ij,ij->i", normals(xyz, out), ref) <= 0)
     moved = relocate(xyz, out, ref, free_vertices(_mesh(pts, tri)), n,
-                     lambda p: (_plane, np.ones(3)))
+                     lambda c, p: (_plane, np.ones(3)))
     assert np.all(np.einsum("ij,ij->i", normals(moved, out), ref) > 0)
     assert not np.array_equal(moved[C], xyz[C])
     np.testing.assert_array_equal(moved[len(p1) + C], moved[C] * [1.0, -1.0, 1.0])

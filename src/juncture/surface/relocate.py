@@ -5,13 +5,14 @@ and fans the triangle beside it from its far corner. Where that corner is a grid
 just beside the curve (a body's network point next to a wing's footprint) and the curve
 bulges past it, the fan would turn over. Such a corner, when it is a free vertex (inside
 one surface of one component, on no intersection, corner or split line, all its edges in
-two triangles), is moved to the point that sees the whole polygon around it farthest
-inside (the Chebyshev centre of the polygon's kernel, a linear programme, in the plane of
-its triangles), taken onto the host's exact surface in its station's plane (Newton steps
-on the host's error function), where then none of its triangles turns over against the
-triangle it came from; its mirror image in y = 0 moves to the mirror image, bit for bit.
-Where the polygon has no kernel (a thin wedge between the curve and the grid) the edge
-keeps its chord, as before.
+two triangles) of the curve's host (a grid point of the wing beside the curve stays:
+taken onto the fuselage it would leave the wing), is moved to the point that sees the
+whole polygon around it farthest inside (the Chebyshev centre of the polygon's kernel, a
+linear programme, in the plane of its triangles), taken onto the host's exact surface in
+its station's plane (Newton steps on the host's error function), where then none of its
+triangles turns over against the triangle it came from; its mirror image in y = 0 moves
+to the mirror image, bit for bit. Where the polygon has no kernel (a thin wedge between
+the curve and the grid) the edge keeps its chord, as before.
 
 Tried and dropped (held-out seeds 8181 and 8282): taking the corner out and triangulating
 the polygon around it again. Constrained Delaunay left triangles of three nearly
@@ -56,8 +57,9 @@ def free_vertices(mesh, fixed=None):
 def relocate(xyz, tri, ref, free, first_new, host):
     """``xyz`` with every free corner of a turned triangle of ``tri`` (its normal against
     ``ref``, the normal of the triangle it came from) that is an old vertex (id below
-    ``first_new``) moved (module docstring). ``host(p)``: (error function, mirror flip) of
-    the host on whose curve the new point ``p`` lies."""
+    ``first_new``) moved (module docstring). ``host(c, p)``: (error function, mirror flip)
+    of the host on whose curve the new point ``p`` lies, None where corner ``c`` is not on
+    that host (it stays)."""
     xyz = np.array(xyz, float)
     turned = np.einsum("ij,ij->i", normals(xyz, tri), ref) <= 0.0
     cand = np.unique(tri[turned])
@@ -90,8 +92,8 @@ def _moved(xyz, tri, ref, c, first_new, host):
     """Where corner ``c`` goes, or None: the centre of the largest circle inside the kernel
     of the polygon around it (the points from which the whole polygon is seen,
     :func:`_kernel_centre`) in the plane of its triangles' original normals ``ref``, taken
-    onto the host (``host``, by the new point nearest ``c``); None where the kernel is
-    empty or a triangle still turns over."""
+    onto the host (``host``, by the new point nearest ``c``); None where ``c`` is not on
+    that host, the kernel is empty or a triangle still turns over."""
     from .plane import frame
 
     rows = np.flatnonzero(np.any(tri == c, axis=1))
@@ -108,7 +110,10 @@ def _moved(xyz, tri, ref, c, first_new, host):
     if centre is None:
         return None
     p = new[np.argmin(np.linalg.norm(xyz[new] - xyz[c], axis=1))]
-    error, flip = host(int(p))
+    got = host(int(c), int(p))
+    if got is None:
+        return None
+    error, flip = got
     q = _onto(error, flip, origin + centre @ axes, float(np.ptp(xyz, axis=0).max()))
     if q is None:
         return None
