@@ -55,16 +55,16 @@ def _covered(points, tri, rim):
                 and uses.max() <= 2)
 
 
-def _mesh(points, tri, name="body"):
+def _mesh(points, tri):
     k = len(tri)
-    return SurfaceMesh(points, tri, np.zeros(k, int), np.zeros(k, int), (name,), (name,))
+    return SurfaceMesh(points, tri, np.zeros(k, int), np.zeros(k, int), ("body",), ("body",))
 
 
 def _curves(points, on):
     """SeamCurves with one curve on the plane through the vertices ``on``."""
     mask = np.zeros(len(points), bool)
     mask[on] = True
-    return SeamCurves(points, [(None, "upper", _plane, np.ones(3), mask)], 1.0, ["body"])
+    return SeamCurves(points, [(None, "upper", _plane, np.ones(3), mask)], 1.0)
 
 
 @settings(max_examples=60, deadline=None)
@@ -97,12 +97,14 @@ def test_a_fixed_grid_point_keeps_the_chord():
     assert len(moved.vertices) == len(pts) + 7
 
 
-def test_a_grid_point_of_another_component_stays():
-    """The curve's host is the body; a grid point of the wing beside the curve (its
-    surface the same plane here) is not taken onto the body: the edge keeps its chord."""
+def test_a_grid_point_off_the_host_stays():
+    """A grid point that does not lie on the curve's host (the wing's beside a fuselage
+    curve; here the host is the plane z = 0 and the point stands 0.01 above it) is not
+    taken onto the host: the edge keeps its chord."""
     pts, tri = _patch(0.5, 0.02)
+    pts[C, 2] = 0.01
     t, arc = _arc(0.1, 7)
-    mesh = _mesh(pts, tri, name="wing")
+    mesh = _mesh(pts, tri)
     out = _fanned(mesh, {(0, 1): (t, arc)}, {}, free_vertices(mesh), _curves(pts, [0, 1]))
     assert out is mesh
 

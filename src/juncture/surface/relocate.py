@@ -5,7 +5,7 @@ and fans the triangle beside it from its far corner. Where that corner is a grid
 just beside the curve (a body's network point next to a wing's footprint) and the curve
 bulges past it, the fan would turn over. Such a corner, when it is a free vertex (inside
 one surface of one component, on no intersection, corner or split line, all its edges in
-two triangles) of the curve's host (a grid point of the wing beside the curve stays:
+two triangles) on the curve's host (a grid point of the wing beside the curve stays:
 taken onto the fuselage it would leave the wing), is moved to the point that sees the
 whole polygon around it farthest inside (the Chebyshev centre of the polygon's kernel, a
 linear programme, in the plane of its triangles), taken onto the host's exact surface in
@@ -58,8 +58,8 @@ def relocate(xyz, tri, ref, free, first_new, host):
     """``xyz`` with every free corner of a turned triangle of ``tri`` (its normal against
     ``ref``, the normal of the triangle it came from) that is an old vertex (id below
     ``first_new``) moved (module docstring). ``host(c, p)``: (error function, mirror flip)
-    of the host on whose curve the new point ``p`` lies, None where corner ``c`` is not on
-    that host (it stays)."""
+    of the host on whose curve the new point ``p`` lies, None where corner ``c`` does not
+    lie on that host's surface (it stays)."""
     xyz = np.array(xyz, float)
     turned = np.einsum("ij,ij->i", normals(xyz, tri), ref) <= 0.0
     cand = np.unique(tri[turned])

@@ -90,14 +90,12 @@ class SeamCurves:
     """The exact intersection curves of a mesh's wing-like components and bodies.
 
     ``lines``: one entry per curve, (the wing-like model, its side, the host's error
-    function, the mirror flip (3,), a (n_vertices,) bool of the mesh's vertices on it);
-    ``hosts``: the host's component name per curve (None: not known)."""
+    function, the mirror flip (3,), a (n_vertices,) bool of the mesh's vertices on it)."""
 
-    def __init__(self, vertices, lines, size, hosts=None):
+    def __init__(self, vertices, lines, size):
         self.vertices = np.asarray(vertices, float)
         self.lines = lines
         self.size = size
-        self.hosts = list(hosts) if hosts is not None else [None] * len(lines)
 
     def on_curve(self, a, b):
         """(k,) index into ``lines`` of the curve edges (a, b) lie on, -1 for none."""
@@ -214,7 +212,7 @@ def seam_curves(geometry, mesh):
         return None
     size = float(np.ptp(vertices, axis=0).max())
     tol = ON * size
-    lines, hosts, boxes = [], [], {}
+    lines, boxes = [], {}
     for wing, host, error in _pairs(geometry, mesh):
         for m in (wing, host):
             if id(m) not in boxes:
@@ -241,8 +239,7 @@ def seam_curves(geometry, mesh):
                 mask = np.zeros(len(vertices), bool)
                 mask[on_body[on]] = True
                 lines.append((wing, side, error, flip, mask))
-                hosts.append(host.name)
-    return SeamCurves(vertices, lines, size, hosts) if lines else None
+    return SeamCurves(vertices, lines, size) if lines else None
 
 
 
@@ -302,14 +299,6 @@ def follow_curves(mesh, curves, sag=SAG, fixed=None):
     return _fanned(mesh, found, partner, free_vertices(mesh, fixed), curves)
 
 
-def _owners(mesh):
-    """(n,) the component name of each vertex of ``mesh`` (of one of its triangles)."""
-    names = np.asarray(mesh.components, object)[np.asarray(mesh.component)]
-    owner = np.full(len(mesh.vertices), None, object)
-    owner[np.asarray(mesh.triangles).ravel()] = np.repeat(names, 3)
-    return owner
-
-
 def _fanned(mesh, found, partner, free=None, curves=None):
     """The mesh with the points ``found`` ({edge: (fractions, points)}) on its edges, the
     triangles on them fanned over them. Where a fan would turn a triangle over (a point past
@@ -333,7 +322,7 @@ def _fanned(mesh, found, partner, free=None, curves=None):
         out = np.concatenate([tri[keep]] + new)
         if free.any():
             xyz = relocate(xyz, out, n0[src], free, len(vertices),
-                           _hosts(found, curves, len(vertices), _owners(mesh)))
+                           _hosts(found, curves, len(vertices), xyz))
         turned = np.einsum("ij,ij->i", normals(xyz, out), n0[src]) <= 0.0
         if not turned.any():
             break
@@ -349,22 +338,23 @@ def _fanned(mesh, found, partner, free=None, curves=None):
     return _tagged(mesh, xyz, out, src)
 
 
-def _hosts(found, curves, first, owner):
+def _hosts(found, curves, first, xyz):
     """``host(c, p)`` for :func:`~juncture.surface.relocate.relocate`: (error function,
     mirror flip) of the host of the curve on whose edge the new point ``p`` (from id
-    ``first`` on, in the order of ``found``) was put, or None where vertex ``c`` is not on
-    that host (``owner``: its component's name; a grid point of the wing beside the curve
-    stays: taken onto the fuselage it would leave the wing)."""
+    ``first`` on, in the order of ``found``) was put, or None where vertex ``c`` (of the
+    points ``xyz``) does not lie on that host's surface (to :data:`ON` of the size): a grid
+    point of the wing beside the curve stays, taken onto the fuselage it would leave the
+    wing. (Whatever network carries it: one layout makes the wing and the fuselage's middle
+    one network.)"""
     keys = list(found)
     which = curves.on_curve(np.array([a for a, _ in keys]), np.array([b for _, b in keys]))
     line = np.repeat(which, [len(found[k][1]) for k in keys])
 
     def host(c, p):
-        k = int(line[p - first])
-        if curves.hosts[k] is None or owner[c] != curves.hosts[k]:
-            return None
-        _, _, error, flip, _ = curves.lines[k]
-        return error, flip
+        _, _, error, flip, _ = curves.lines[int(line[p - first])]
+        with np.errstate(invalid="ignore"):
+            on = abs(float(error((xyz[c] * flip)[None])[0])) <= ON * curves.size
+        return (error, flip) if on else None
     return host
 
 
