@@ -130,7 +130,7 @@ def test_a_point_and_its_mirror_image_move_together():
     ref = normals(pts, tri)[src]
     assert np.any(np.einsum("ij,ij->i", normals(xyz, out), ref) <= 0)
     moved = relocate(xyz, out, ref, free_vertices(_mesh(pts, tri)), n,
-                     lambda c, p: (_plane, np.ones(3)))
+                     lambda q, p: (_plane, np.ones(3)))
     assert np.all(np.einsum("ij,ij->i", normals(moved, out), ref) > 0)
     assert not np.array_equal(moved[C], xyz[C])
     np.testing.assert_array_equal(moved[len(p1) + C], moved[C] * [1.0, -1.0, 1.0])

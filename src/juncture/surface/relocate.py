@@ -57,9 +57,9 @@ def free_vertices(mesh, fixed=None):
 def relocate(xyz, tri, ref, free, first_new, host):
     """``xyz`` with every free corner of a turned triangle of ``tri`` (its normal against
     ``ref``, the normal of the triangle it came from) that is an old vertex (id below
-    ``first_new``) moved (module docstring). ``host(c, p)``: (error function, mirror flip)
-    of the host on whose curve the new point ``p`` lies, None where corner ``c`` does not
-    lie on that host's surface (it stays)."""
+    ``first_new``) moved (module docstring). ``host(q, p)``: (error function, mirror flip)
+    of the host on whose curve the new point ``p`` lies, None where the corner's point
+    ``q`` does not lie on that host's surface (it stays)."""
     xyz = np.array(xyz, float)
     turned = np.einsum("ij,ij->i", normals(xyz, tri), ref) <= 0.0
     cand = np.unique(tri[turned])
@@ -70,11 +70,12 @@ def relocate(xyz, tri, ref, free, first_new, host):
     from .mirror import FLIP, mirror_map
 
     mirror = mirror_map(xyz)
+    size = float(np.ptp(xyz, axis=0).max())
     for c in cand.tolist():
         m = int(mirror[c])
         if m == c or (m >= 0 and xyz[c, 1] < 0.0):
             continue                           # on the plane, or its image's turn
-        got = _moved(xyz, tri, ref, c, first_new, host)
+        got = _moved(xyz, tri, ref, c, first_new, host, size)
         if got is None:
             continue
         both = [c] if m < 0 else [c, m]
@@ -88,12 +89,13 @@ def relocate(xyz, tri, ref, free, first_new, host):
     return xyz
 
 
-def _moved(xyz, tri, ref, c, first_new, host):
+def _moved(xyz, tri, ref, c, first_new, host, size):
     """Where corner ``c`` goes, or None: the centre of the largest circle inside the kernel
     of the polygon around it (the points from which the whole polygon is seen,
     :func:`_kernel_centre`) in the plane of its triangles' original normals ``ref``, taken
-    onto the host (``host``, by the new point nearest ``c``); None where ``c`` is not on
-    that host, the kernel is empty or a triangle still turns over."""
+    onto the host (``host``, by the new point nearest ``c``; Newton to 1e-13 of ``size``);
+    None where ``c`` is not on that host, the kernel is empty or a triangle still turns
+    over."""
     from .plane import frame
 
     rows = np.flatnonzero(np.any(tri == c, axis=1))
@@ -110,11 +112,11 @@ def _moved(xyz, tri, ref, c, first_new, host):
     if centre is None:
         return None
     p = new[np.argmin(np.linalg.norm(xyz[new] - xyz[c], axis=1))]
-    got = host(int(c), int(p))
+    got = host(xyz[c], int(p))
     if got is None:
         return None
     error, flip = got
-    q = _onto(error, flip, origin + centre @ axes, float(np.ptp(xyz, axis=0).max()))
+    q = _onto(error, flip, origin + centre @ axes, size)
     if q is None:
         return None
     trial = xyz.copy()

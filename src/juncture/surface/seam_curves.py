@@ -322,7 +322,7 @@ def _fanned(mesh, found, partner, free=None, curves=None):
         out = np.concatenate([tri[keep]] + new)
         if free.any():
             xyz = relocate(xyz, out, n0[src], free, len(vertices),
-                           _hosts(found, curves, len(vertices), xyz))
+                           _hosts(found, curves, len(vertices)))
         turned = np.einsum("ij,ij->i", normals(xyz, out), n0[src]) <= 0.0
         if not turned.any():
             break
@@ -338,22 +338,21 @@ def _fanned(mesh, found, partner, free=None, curves=None):
     return _tagged(mesh, xyz, out, src)
 
 
-def _hosts(found, curves, first, xyz):
-    """``host(c, p)`` for :func:`~juncture.surface.relocate.relocate`: (error function,
+def _hosts(found, curves, first):
+    """``host(q, p)`` for :func:`~juncture.surface.relocate.relocate`: (error function,
     mirror flip) of the host of the curve on whose edge the new point ``p`` (from id
-    ``first`` on, in the order of ``found``) was put, or None where vertex ``c`` (of the
-    points ``xyz``) does not lie on that host's surface (to :data:`ON` of the size): a grid
-    point of the wing beside the curve stays, taken onto the fuselage it would leave the
-    wing. (Whatever network carries it: one layout makes the wing and the fuselage's middle
-    one network.)"""
+    ``first`` on, in the order of ``found``) was put, or None where the point ``q`` (3,)
+    does not lie on that host's surface (to :data:`ON` of the size): a grid point of the
+    wing beside the curve stays, taken onto the fuselage it would leave the wing. (Whatever
+    network carries it: one layout makes the wing and the fuselage's middle one network.)"""
     keys = list(found)
     which = curves.on_curve(np.array([a for a, _ in keys]), np.array([b for _, b in keys]))
     line = np.repeat(which, [len(found[k][1]) for k in keys])
 
-    def host(c, p):
+    def host(q, p):
         _, _, error, flip, _ = curves.lines[int(line[p - first])]
         with np.errstate(invalid="ignore"):
-            on = abs(float(error((xyz[c] * flip)[None])[0])) <= ON * curves.size
+            on = abs(float(error((q * flip)[None])[0])) <= ON * curves.size
         return (error, flip) if on else None
     return host
 
