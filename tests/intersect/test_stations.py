@@ -126,3 +126,47 @@ def test_a_steep_but_continuous_cut_is_still_solved(monkeypatch):
     ga, gb = x_of_f(np.zeros(2)) - x0, x_of_f(np.ones(2)) - x0
     got = solve(None, None, "upper", x0, np.zeros(2), np.ones(2), ga, gb, 1e-11)
     np.testing.assert_allclose(got[:, 0], x0, atol=1e-11)
+
+
+def _stepped(body, at, scale):
+    """``body`` (a circular fuselage) with a joint at its station ``at``: the stations from
+    there to the end of that segment repeat at ``scale`` times the radius (a step)."""
+    from juncture.model import CircularBody
+
+    x, r = np.asarray(body.x), np.asarray(body.radius)
+    c = np.asarray(body.camber) if body.camber is not None else np.zeros_like(x)
+    k = int(np.flatnonzero(x == at)[0])
+    ends = np.cumsum(body.segments)
+    seg = int(np.searchsorted(ends, k, side="right"))
+    end = ends[seg]
+    xs = np.concatenate([x[:k + 1], x[k:]])
+    rs = np.concatenate([r[:k + 1], r[k:end] * scale, r[end:]])
+    cs = np.concatenate([c[:k + 1], c[k:]])
+    counts = list(body.segments)
+    counts[seg:seg + 1] = [k + 1 - (ends[seg] - counts[seg]), end - k]
+    return CircularBody(body.name, xs, rs, cs, body.origin, tuple(counts), body.mirrored,
+                        body.axial)
+
+
+@pytest.mark.parametrize("scale", [1.05, 0.95])
+@pytest.mark.parametrize("side", ["upper", "lower"])
+def test_a_station_at_a_step_ends_on_each_section(side, scale):
+    """The transport's fuselage stepping out (or in) by 5 % of its radius at x = 140, under
+    the wing root: the lofting lines' first crossings jump there (some meet the step's
+    face), and the search over chord fractions alone left the joint's station without a
+    point (NaN). The point a rounding ahead of the joint lies on the earlier section (the
+    deck's radius), the point at the joint on the later one (its radius times the scale),
+    both on the wing (the section point root-found on the model) and in their plane."""
+    cfg = jc.read(TRANSPORT)
+    wing, body = cfg["wing"], _stepped(cfg["body"], 140.0, scale)
+    inter = intersect_body(wing, body, side)
+    x = np.array([np.nextafter(140.0, -np.inf), 140.0])
+    got = plane_points(wing, body, side, inter.points, x)
+    assert np.all(np.isfinite(got))
+    L = body.length
+    assert np.abs(got[:, 0] - 140.0).max() <= 1e-12 * L
+    centre_z = float(np.asarray(body.camber)[np.asarray(body.x) == 140.0][0])
+    r = np.hypot(got[:, 1] - body.origin[1], got[:, 2] - body.origin[2] - centre_z)
+    r_deck = float(np.asarray(cfg["body"].radius)[np.asarray(cfg["body"].x) == 140.0][0])
+    np.testing.assert_allclose(r, [r_deck, scale * r_deck], atol=1e-9 * L)
+    assert np.abs(wing_height(wing, side, got) - got[:, 2]).max() <= 1e-9 * L

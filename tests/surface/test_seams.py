@@ -192,3 +192,52 @@ def test_a_long_root_edge_takes_only_points_of_its_own_seam(monkeypatch):
 
     monkeypatch.setattr(sm, "_nearest_edges", nearest)
     assert len(assemble(geo).open_loops) == 4
+
+
+def _jog():
+    """A wing triangle a b c (sharp at a) with its neighbours across b c and c a, and a
+    fuselage strip below a b whose boundary runs b -> p2 -> p1 -> a: the curve jogs at
+    x = 1 from p1 to p2, beyond the wing triangle's side c a (as a seam crossing a
+    fuselage's step at a joint does), inside the seam's lens."""
+    pts = np.array([[0.0, 0.0], [10.0, 0.0], [5.0, 1.0], [9.0, 4.0], [1.0, 4.0],
+                    [1.0, 0.1], [1.0, 0.3], [0.0, -2.0], [10.0, -2.0]])
+    pts = np.column_stack([pts, np.zeros(len(pts))])
+    a, b, c, d, e, p1, p2, q0, q1 = range(9)
+    tri = np.array([(a, b, c), (c, b, d), (a, c, e),                   # the wing
+                    (a, q0, p1), (p1, q0, q1), (p1, q1, p2), (p2, q1, b)])  # the fuselage
+    return pts, tri, np.array([0, 0, 0, 1, 1, 1, 1])
+
+
+def test_a_curve_jogging_past_the_triangle_is_taken_by_its_neighbours(monkeypatch):
+    """The fan from c would turn over (p1 p2 c) and the polygon a p1 p2 b c crosses itself:
+    the triangle and its neighbours are triangulated again with the chain in their border.
+    The seam closes with both jog points kept (every edge between seam points in two
+    triangles), every triangle facing +z and the wing's area grown by the sliver the jog
+    takes from it. Without this (the counterfactual), the fuselage gave the points up."""
+    import juncture.surface.seams as seams
+
+    pts, tri, comp = _jog()
+    out, parent = split_seams(pts, tri, comp)
+    assert _seam_edges_open(pts, out) == 0
+    assert {5, 6} <= set(out.ravel().tolist())
+    n = np.cross(pts[out[:, 1]] - pts[out[:, 0]], pts[out[:, 2]] - pts[out[:, 0]])
+    assert np.all(n[:, 2] > 0.0)
+    area = 0.5 * n[:, 2]
+    before = 0.5 * np.cross(pts[tri[:, 1]] - pts[tri[:, 0]], pts[tri[:, 2]] - pts[tri[:, 0]])[:, 2]
+    jog = pts[[0, 5, 6, 1], :2]                       # a p1 p2 b: what the wing gives up
+    taken = 0.5 * abs(np.dot(jog[:, 0], np.roll(jog[:, 1], -1))
+                      - np.dot(jog[:, 1], np.roll(jog[:, 0], -1)))
+    wing = comp[parent] == 0
+    np.testing.assert_allclose(area[wing].sum(), before[comp == 0].sum() - taken, atol=1e-12)
+    np.testing.assert_allclose(area[~wing].sum(), before[comp == 1].sum(), atol=1e-12)
+    monkeypatch.setattr(seams, "_widened", lambda *a: None)
+    out, _ = split_seams(pts, tri, comp)
+    assert not {5, 6} & set(out.ravel().tolist())
+
+
+def _seam_edges_open(pts, tri):
+    """Boundary edges whose two ends both lie on the seam (a, b and the jog's points)."""
+    on = np.zeros(len(pts), bool)
+    on[[0, 1, 5, 6]] = True
+    loops = boundary_loops(tri)
+    return sum(bool(on[a] and on[b]) for lp in loops for a, b in zip(lp, np.roll(lp, -1)))

@@ -83,8 +83,72 @@ def plane_points(wing, body, side, points, x, either=False):
     x0 = x[rows]
     solved = _false_position(wing, body, side, x0, fa[j], fb[j], xa[j] - x0, xb[j] - x0,
                              XTOL * size)
+    error = _error_function(body)
+    axis = wing.span_axis
+    for i in np.flatnonzero(_at_joint(body, x0, XTOL * size)):
+        solved[i] = _in_plane(wing, error, side, x0[i], p[a[j[i]], axis], p[b[j[i]], axis],
+                              XTOL * size)
     out[rows] = solved
     return out
+
+
+def _at_joint(body, x0, tol):
+    """(k,) bool: stations within ``tol`` of a joint where two segments repeat a station
+    (there the lofting lines' crossings jump, or the search ends a rounding on the wrong
+    side of the joint)."""
+    x = np.asarray(body.x_global, float)
+    joints = x[1:][x[1:] == x[:-1]]
+    if not joints.size:
+        return np.zeros(x0.size, bool)
+    return np.min(np.abs(x0[:, None] - joints[None, :]), axis=1) <= tol
+
+
+#: Samples of the wing's cut in a plane x = x0 searched for the body's crossing.
+SAMPLES = 64
+#: The span searched, on each side of the two bracketing points' span stations, in shares
+#: of the span between them: the nearest crossing in the first that has one.
+WIDEN = (1.0, 4.0, 16.0)
+
+
+def _in_plane(wing, error, side, x0, sa, sb, tol):
+    """(3,) the point where ``wing``'s ``side`` surface meets the body (``error``, its
+    error function) in the plane x = ``x0``, near the span stations ``sa`` and ``sb`` of the
+    two lofting lines' points that bracket x0; NaN where it has none there.
+
+    The lofting lines' first crossings with the body jump at a fuselage joint whose two
+    sections differ (a step: lines between two fractions meet the step's face), so the
+    search over chord fractions cannot close in on a station there; x0 = x_joint is the
+    later section's plane, a hair before it the earlier's. In its plane the wing's cut is
+    a curve of the span station alone: x = le_x(s) + c(s) f is linear in the fraction f
+    at each span station s, so f(s) = (x0 - le_x(s)) / c(s), and the crossing is a root
+    of the body's error function along s (sampled, then Brent's method)."""
+    from scipy.optimize import brentq
+
+    lo, hi = min(sa, sb), max(sa, sb)
+
+    def on_cut(s):
+        s = np.atleast_1d(np.asarray(s, float))
+        ends = wing.point(np.stack([s, s], -1), np.array([0.0, 1.0]), side, extrapolate=True)
+        f = (x0 - ends[:, 0, 0]) / (ends[:, 1, 0] - ends[:, 0, 0])
+        q = wing.point(s, f, side, extrapolate=True)
+        q[:, 0] = x0      # in the plane exactly: a hair before a joint is the earlier section
+        return q, f
+
+    for widen in WIDEN:       # the span between the two lines' points, then more round it
+        pad = max(widen * (hi - lo), tol)
+        s = np.linspace(lo - pad, hi + pad, SAMPLES)
+        q, f = on_cut(s)
+        g = error(q)
+        ok = np.isfinite(g) & (f >= 0.0) & (f <= 1.0)
+        change = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(g[:-1]) * np.sign(g[1:]) <= 0.0))
+        if change.size:
+            break
+    else:
+        return np.full(3, np.nan)
+    k = change[np.argmin(np.abs(s[change] - 0.5 * (lo + hi)))]
+    root = brentq(lambda t: float(error(on_cut(t)[0])[0]), s[k], s[k + 1], xtol=tol * 1e-3,
+                  rtol=4 * np.finfo(float).eps)
+    return on_cut(root)[0][0]
 
 
 def _false_position(wing, body, side, x0, fa, fb, ga, gb, tol):
@@ -127,24 +191,28 @@ def _cut(wing, body, side, fractions):
     ``body`` on ``side`` (NaN where one misses it)."""
     from .body import intersect_body
 
-    want = np.asarray(fractions, float)
-    f = np.unique(np.concatenate([want, [0.0 if want.min() > 0.0 else 1.0]]))  # 2 at least
-    cut = intersect_body(_lines_at(wing, side, f), body, "upper")
-    rows = np.searchsorted(f, want)
+    want = 100.0 * np.asarray(fractions, float)    # per cent, as the chord stations are
+    # 2 at least; fractions a rounding apart (stations a rounding either side of a joint)
+    # are one chord station
+    pct = np.unique(np.concatenate([want, [0.0 if want.min() > 0.0 else 100.0]]))
+    cut = intersect_body(_lines_at(wing, side, pct), body, "upper")
+    rows = np.searchsorted(pct, want)
     return np.where(cut.found[rows, None], cut.points[rows], np.nan)
 
 
-def _lines_at(wing, side, f):
+def _lines_at(wing, side, pct):
     """A wing-like component whose lofting lines (both sides) are ``wing``'s ``side``
-    lofting lines at the chord fractions ``f`` (sorted): its sections' offsets are the
-    model's own section curves there (:meth:`~juncture.model.WingLike.point`), as a
-    camber line of zero thickness (only the lines at ``f`` are asked for: the other
-    chord fractions' curves of this copy are not the model's)."""
+    lofting lines at the chord stations ``pct`` (per cent, increasing): its sections'
+    offsets are the model's own section curves there
+    (:meth:`~juncture.model.WingLike.point`), as a camber line of zero thickness (only the
+    lines at ``pct`` are asked for: the other chord fractions' curves of this copy are not
+    the model's)."""
     from ..model import WingLike
 
+    f = pct / 100.0
     span = wing.span_stations
     axis = wing.thickness_axis
     offsets = wing.point(span[:, None], f[None, :], side)[..., axis] - wing.le[:, None, axis]
     zero = np.zeros_like(offsets)
-    return WingLike(wing.name, wing.kind, wing.le, wing.chord, 100.0 * f, zero, zero, offsets,
+    return WingLike(wing.name, wing.kind, wing.le, wing.chord, pct, zero, zero, offsets,
                     wing.mirrored, wing.chordwise)

@@ -90,6 +90,81 @@ def _fan(tri, a, b, inserted):
     return [(chain[i], chain[i + 1], c) for i in range(len(chain) - 1)]
 
 
+def _filled(vertices, tri, a, b, chain):
+    """Triangles replacing ``tri`` where its fan (:func:`_fan`) would fold: the polygon of
+    the edge's points and its third corner, triangulated in the triangle's plane
+    (constrained Delaunay, no point added), or None where that polygon crosses itself or a
+    triangle of it would face the other way. The curve can jog towards the third corner:
+    where a fuselage steps at a joint, the seam crosses the step's face in the plane
+    x = x_joint, across the edge, and the corner no longer sees the chain in order."""
+    from .plane import constrained_triangles, frame, is_simple
+
+    k = list(tri).index(a)
+    ring = np.array([a, *chain, b, tri[(k + 2) % 3]])
+    n0 = _normal(vertices, tri)
+    uv = (vertices[ring] - vertices[a]) @ frame(n0 / np.linalg.norm(n0)).T
+    if not is_simple(uv):
+        return None
+    local = constrained_triangles(uv, [list(range(len(ring)))])
+    if local is None or len(local) != len(ring) - 2:
+        return None
+    out = ring[local]
+    if not all(_normal(vertices, f) @ n0 > 0.0 for f in out):
+        return None
+    return [tuple(int(i) for i in f) for f in out]
+
+
+def _widened(vertices, triangles, t, a, b, chain):
+    """(removed, new): the triangle ``t`` (with the boundary edge a -> b) and the triangles
+    across its two other edges re-triangulated with the edge replaced by ``a``, ``chain``,
+    ``b``, where a chain point lies beyond the triangle (:func:`_filled` is not simple):
+    the curve, crossing a fuselage's step, jogs across the triangle's far edge. Constrained
+    Delaunay in their mean plane, no point added; None where it would fold."""
+    from .assemble import boundary_loops
+
+    tri = triangles[t]
+    k = list(tri).index(a)
+    c = int(tri[(k + 2) % 3])
+    across = (np.isin(triangles, [b, c]).sum(axis=1) == 2) | \
+        (np.isin(triangles, [c, a]).sum(axis=1) == 2)
+    ring = [t] + [int(r) for r in np.flatnonzero(across) if r != t]
+    loops = boundary_loops(triangles[ring])
+    if len(loops) != 1:
+        return None
+    border = [int(v) for v in loops[0]]
+    i = border.index(a)
+    border = border[i:] + border[:i]
+    if border[1] != b:
+        return None
+    return _refilled(vertices, triangles, ring, [a, *chain, b] + border[2:], chain)
+
+
+def _refilled(vertices, triangles, ring, border, chain):
+    """(ring, new): the triangles ``ring`` re-triangulated inside ``border`` (vertex ids,
+    in order) with their other vertices inside, in their mean plane (constrained Delaunay,
+    no point added); None where it crosses itself or a triangle would turn over."""
+    from .plane import constrained_triangles, frame, is_simple
+
+    p = vertices[triangles[ring]]
+    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]).sum(axis=0)
+    n /= np.linalg.norm(n)
+    interior = np.setdiff1d(np.unique(triangles[ring]), border + list(chain))
+    ids = np.concatenate([np.array(border), interior]).astype(np.int64)
+    uv = (vertices[ids] - vertices[ids].mean(axis=0)) @ frame(n).T
+    m = len(border)
+    if not is_simple(uv[:m]):
+        return None
+    local = constrained_triangles(uv, [list(range(m))])
+    if local is None:
+        return None
+    new = ids[local]
+    q = vertices[new]
+    if len(new) != m + 2 * len(interior) - 2 or \
+            np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
+        return None
+    return [int(r) for r in ring], new
+
+
 def _normal(v, t):
     return np.cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]])
 
@@ -159,7 +234,13 @@ def split_seams(vertices, triangles, component, lens=LENS):
         n0 = _normal(vertices, triangles[t])
         if all(_normal(vertices, f) @ n0 > 0.0 for f in fan):
             cut = ([t], fan)
-        else:  # the fan would fold: the other side gives up the points instead
+        elif (filled := _filled(vertices, triangles[t], a, b, chain)) is not None:
+            cut = ([t], filled)
+        elif (wide := _widened(vertices, triangles, t, a, b, chain)) is not None:
+            cut = wide
+            if used.intersection(cut[0]):
+                continue
+        else:  # no fill that keeps its side: the other side gives up the points instead
             cut = _collapse(vertices, triangles, a, b, chain)
             if cut is None or used.intersection(cut[0]):
                 continue
@@ -317,7 +398,6 @@ def _collapse(vertices, triangles, a, b, chain):
     this side's first strip, leave the mesh. Constrained Delaunay in the triangles' mean
     plane, no point added; None where it would fold."""
     from .assemble import boundary_loops
-    from .plane import constrained_triangles, frame, is_simple
 
     ring = np.flatnonzero(np.isin(triangles, chain).any(axis=1))
     loops = boundary_loops(triangles[ring])
@@ -333,21 +413,4 @@ def _collapse(vertices, triangles, a, b, chain):
     if border[:len(path)] != path:
         return None
     border = [b] + border[len(path) - 1:]          # b, a, ... back to b
-    p = vertices[triangles[ring]]
-    n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]).sum(axis=0)
-    n /= np.linalg.norm(n)
-    interior = np.setdiff1d(np.unique(triangles[ring]), border + chain)
-    ids = np.concatenate([np.array(border), interior]).astype(np.int64)
-    uv = (vertices[ids] - vertices[ids].mean(axis=0)) @ frame(n).T
-    m = len(border)
-    if not is_simple(uv[:m]):
-        return None
-    local = constrained_triangles(uv, [list(range(m))])
-    if local is None:
-        return None
-    new = ids[local]
-    q = vertices[new]
-    if len(new) != m + 2 * len(interior) - 2 or \
-            np.any(np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]) @ n <= 0.0):
-        return None
-    return [int(r) for r in ring], new
+    return _refilled(vertices, triangles, ring, border, chain)
