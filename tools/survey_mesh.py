@@ -131,19 +131,6 @@ def _near(cfg, point):
         tags.append("at the plane of symmetry")
     return f" [near: {'; '.join(tags)}]" if tags else ""
 
-    tags = []
-    for comp in cfg:
-        x = np.asarray(getattr(comp, "x_global", ()), float)
-        if x.size < 2:
-            continue
-        joints = x[1:][x[1:] == x[:-1]]
-        close = joints[np.abs(joints - point[0]) <= 0.01 * np.ptp(x)]
-        if close.size:
-            tags.append(f"joint of {comp.name} at x={close[0]:.6g}")
-    if abs(point[1]) <= 1e-3 * max(float(np.ptp(point)), 1.0):
-        tags.append("at the plane of symmetry")
-    return f" [near: {'; '.join(tags)}]" if tags else ""
-
 
 def sharp_corners(surface, angles, limit=5.0):
     """(count, inherent): triangles with an angle under ``limit`` degrees, and how many of
