@@ -94,13 +94,26 @@ def plane_points(wing, body, side, points, x, either=False):
 
 def _at_joint(body, x0, tol):
     """(k,) bool: stations within ``tol`` of a joint where two segments repeat a station
-    (there the lofting lines' crossings jump, or the search ends a rounding on the wrong
-    side of the joint)."""
+    with different sections (a step: there the lofting lines' crossings jump, or the search
+    ends a rounding on the wrong side of the joint). A joint whose two sections are one
+    keeps the search over chord fractions."""
+    from ..model import CircularBody
+
     x = np.asarray(body.x_global, float)
-    joints = x[1:][x[1:] == x[:-1]]
+    joints = np.unique(x[1:][x[1:] == x[:-1]])
     if not joints.size:
         return np.zeros(x0.size, bool)
-    return np.min(np.abs(x0[:, None] - joints[None, :]), axis=1) <= tol
+    from .body import _error_function
+
+    par = np.linspace(-np.pi, np.pi, 13) if isinstance(body, CircularBody) else \
+        np.linspace(0.0, 1.0, 13)
+    later = body.point(joints[:, None], par[None, :])        # on the later section
+    later[..., 0] = np.nextafter(joints, -np.inf)[:, None]   # measured on the earlier one
+    off = np.abs(_error_function(body)(later.reshape(-1, 3))).reshape(later.shape[:2])
+    steps = joints[off.max(axis=1) > tol]
+    if not steps.size:
+        return np.zeros(x0.size, bool)
+    return np.min(np.abs(x0[:, None] - steps[None, :]), axis=1) <= tol
 
 
 #: Samples of the wing's cut in a plane x = x0 searched for the body's crossing.

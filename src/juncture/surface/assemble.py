@@ -663,7 +663,7 @@ def assemble(geometry, mirror=True, cap=True, flow_through=False):
     keep &= _off_plane(geometry, nets, vertices, triangles, surface) if mirror else True
     triangles, component, surface = triangles[keep], component[keep], surface[keep]
     for _ in range(3):  # a triangle with two seam edges gets its second fan next pass
-        triangles, parent = split_seams(vertices, triangles, component)
+        triangles, parent = split_seams(vertices, triangles, component, surface=surface)
         if len(parent) == len(component) and np.array_equal(parent, np.arange(len(parent))):
             break
         component, surface = component[parent], surface[parent]

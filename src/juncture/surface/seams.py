@@ -38,6 +38,12 @@ LENS = 0.05
 #: a wing's root 14 deg from its end is.
 END = 0.4
 
+#: A triangle is re-triangulated with its neighbours (:func:`_widened`) only where their
+#: normals lie within this many degrees of its own: flattened further, the new triangles
+#: turned over in the surface's chart (a wing with a cubic fillet, turning down to its
+#: leading edge at the root, kept hundreds of slivers).
+FLAT_RING = 20.0
+
 #: The lens for a point of the edge's own component: on the edge, to round-off.
 COLLINEAR = 1e-9
 
@@ -114,20 +120,27 @@ def _filled(vertices, tri, a, b, chain):
     return [tuple(int(i) for i in f) for f in out]
 
 
-def _widened(vertices, triangles, t, a, b, chain):
+def _widened(vertices, triangles, t, a, b, chain, owner):
     """(removed, new): the triangle ``t`` (with the boundary edge a -> b) and the triangles
     across its two other edges re-triangulated with the edge replaced by ``a``, ``chain``,
     ``b``, where a chain point lies beyond the triangle (:func:`_filled` is not simple):
-    the curve, crossing a fuselage's step, jogs across the triangle's far edge. Constrained
-    Delaunay in their mean plane, no point added; None where it would fold."""
+    the curve, crossing a fuselage's step, jogs across the triangle's far edge. Only
+    neighbours of the triangle's own surface (``owner``: (m,) the surface or component of
+    each triangle) are taken: the new triangles are its surface's. Constrained Delaunay in
+    their mean plane, no point added; None where it would fold."""
     from .assemble import boundary_loops
 
     tri = triangles[t]
     k = list(tri).index(a)
     c = int(tri[(k + 2) % 3])
-    across = (np.isin(triangles, [b, c]).sum(axis=1) == 2) | \
-        (np.isin(triangles, [c, a]).sum(axis=1) == 2)
+    across = ((np.isin(triangles, [b, c]).sum(axis=1) == 2) |
+              (np.isin(triangles, [c, a]).sum(axis=1) == 2)) & (owner == owner[t])
     ring = [t] + [int(r) for r in np.flatnonzero(across) if r != t]
+    q = vertices[triangles[ring]]
+    n = np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0])
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    if np.min(n @ n[0]) < np.cos(np.radians(FLAT_RING)):
+        return None          # a curved patch (a wing turning down to its leading edge)
     loops = boundary_loops(triangles[ring])
     if len(loops) != 1:
         return None
@@ -169,7 +182,7 @@ def _normal(v, t):
     return np.cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]])
 
 
-def split_seams(vertices, triangles, component, lens=LENS):
+def split_seams(vertices, triangles, component, lens=LENS, surface=None):
     """Triangles (and their component ids) with every cross-component seam made conformal.
 
     Parameters
@@ -180,6 +193,10 @@ def split_seams(vertices, triangles, component, lens=LENS):
         The component each triangle belongs to.
     lens : float
         See :data:`LENS`.
+    surface : (m,) int, optional
+        The surface (network) each triangle comes from: a triangle re-triangulated with its
+        neighbours (:func:`_widened`) takes only those of its own surface (default: of its
+        component).
 
     Returns
     -------
@@ -236,7 +253,8 @@ def split_seams(vertices, triangles, component, lens=LENS):
             cut = ([t], fan)
         elif (filled := _filled(vertices, triangles[t], a, b, chain)) is not None:
             cut = ([t], filled)
-        elif (wide := _widened(vertices, triangles, t, a, b, chain)) is not None:
+        elif (wide := _widened(vertices, triangles, t, a, b, chain,
+                               component if surface is None else surface)) is not None:
             cut = wide
             if used.intersection(cut[0]):
                 continue
