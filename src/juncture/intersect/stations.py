@@ -204,28 +204,24 @@ def _cut(wing, body, side, fractions):
     ``body`` on ``side`` (NaN where one misses it)."""
     from .body import intersect_body
 
-    want = 100.0 * np.asarray(fractions, float)    # per cent, as the chord stations are
-    # 2 at least; fractions a rounding apart (stations a rounding either side of a joint)
-    # are one chord station
-    pct = np.unique(np.concatenate([want, [0.0 if want.min() > 0.0 else 100.0]]))
-    cut = intersect_body(_lines_at(wing, side, pct), body, "upper")
-    rows = np.searchsorted(pct, want)
+    want = np.asarray(fractions, float)
+    f = np.unique(np.concatenate([want, [0.0 if want.min() > 0.0 else 1.0]]))  # 2 at least
+    cut = intersect_body(_lines_at(wing, side, f), body, "upper")
+    rows = np.searchsorted(f, want)
     return np.where(cut.found[rows, None], cut.points[rows], np.nan)
 
 
-def _lines_at(wing, side, pct):
+def _lines_at(wing, side, f):
     """A wing-like component whose lofting lines (both sides) are ``wing``'s ``side``
-    lofting lines at the chord stations ``pct`` (per cent, increasing): its sections'
-    offsets are the model's own section curves there
-    (:meth:`~juncture.model.WingLike.point`), as a camber line of zero thickness (only the
-    lines at ``pct`` are asked for: the other chord fractions' curves of this copy are not
-    the model's)."""
+    lofting lines at the chord fractions ``f`` (sorted): its sections' offsets are the
+    model's own section curves there (:meth:`~juncture.model.WingLike.point`), as a
+    camber line of zero thickness (only the lines at ``f`` are asked for: the other
+    chord fractions' curves of this copy are not the model's)."""
     from ..model import WingLike
 
-    f = pct / 100.0
     span = wing.span_stations
     axis = wing.thickness_axis
     offsets = wing.point(span[:, None], f[None, :], side)[..., axis] - wing.le[:, None, axis]
     zero = np.zeros_like(offsets)
-    return WingLike(wing.name, wing.kind, wing.le, wing.chord, pct, zero, zero, offsets,
+    return WingLike(wing.name, wing.kind, wing.le, wing.chord, 100.0 * f, zero, zero, offsets,
                     wing.mirrored, wing.chordwise)
