@@ -98,13 +98,12 @@ def _at_joint(body, x0, tol):
     ends a rounding on the wrong side of the joint). A joint whose two sections are one
     keeps the search over chord fractions."""
     from ..model import CircularBody
+    from .body import _error_function
 
     x = np.asarray(body.x_global, float)
     joints = np.unique(x[1:][x[1:] == x[:-1]])
     if not joints.size:
         return np.zeros(x0.size, bool)
-    from .body import _error_function
-
     par = np.linspace(-np.pi, np.pi, 13) if isinstance(body, CircularBody) else \
         np.linspace(0.0, 1.0, 13)
     later = body.point(joints[:, None], par[None, :])        # on the later section

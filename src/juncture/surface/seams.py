@@ -100,9 +100,9 @@ def _filled(vertices, tri, a, b, chain):
     """Triangles replacing ``tri`` where its fan (:func:`_fan`) would fold: the polygon of
     the edge's points and its third corner, triangulated in the triangle's plane
     (constrained Delaunay, no point added), or None where that polygon crosses itself or a
-    triangle of it would face the other way. The curve can jog towards the third corner:
-    where a fuselage steps at a joint, the seam crosses the step's face in the plane
-    x = x_joint, across the edge, and the corner no longer sees the chain in order."""
+    triangle of it would face the other way. The chain can turn back as seen from the third
+    corner (a curve that jogs towards it: across a fuselage's step at a joint, or a
+    fillet's line bending off the root), and the corner no longer sees it in order."""
     from .plane import constrained_triangles, frame, is_simple
 
     k = list(tri).index(a)
@@ -124,7 +124,7 @@ def _widened(vertices, triangles, t, a, b, chain, owner):
     """(removed, new): the triangle ``t`` (with the boundary edge a -> b) and the triangles
     across its two other edges re-triangulated with the edge replaced by ``a``, ``chain``,
     ``b``, where a chain point lies beyond the triangle (:func:`_filled` is not simple):
-    the curve, crossing a fuselage's step, jogs across the triangle's far edge. Only
+    the curve jogs across the triangle's far edge. Only
     neighbours of the triangle's own surface (``owner``: (m,) the surface or component of
     each triangle) are taken: the new triangles are its surface's. Constrained Delaunay in
     their mean plane, no point added; None where it would fold."""
