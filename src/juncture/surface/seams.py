@@ -96,28 +96,16 @@ def _fan(tri, a, b, inserted):
     return [(chain[i], chain[i + 1], c) for i in range(len(chain) - 1)]
 
 
-def _filled(vertices, tri, a, b, chain):
-    """Triangles replacing ``tri`` where its fan (:func:`_fan`) would fold: the polygon of
-    the edge's points and its third corner, triangulated in the triangle's plane
-    (constrained Delaunay, no point added), or None where that polygon crosses itself or a
-    triangle of it would face the other way. The chain can turn back as seen from the third
-    corner (a curve that jogs towards it: across a fuselage's step at a joint, or a
-    fillet's line bending off the root), and the corner no longer sees it in order."""
-    from .plane import constrained_triangles, frame, is_simple
-
+def _filled(vertices, triangles, t, a, b, chain):
+    """(removed, new): the triangle ``t`` (with the directed edge a -> b) where its fan
+    (:func:`_fan`) would fold: the polygon of the edge's points and its third corner,
+    triangulated in the triangle's plane (:func:`_refilled`), or None. The chain can turn
+    back as seen from the third corner (a curve that jogs towards it: across a fuselage's
+    step at a joint, or a fillet's line bending off the root), and the corner no longer
+    sees it in order."""
+    tri = triangles[t]
     k = list(tri).index(a)
-    ring = np.array([a, *chain, b, tri[(k + 2) % 3]])
-    n0 = _normal(vertices, tri)
-    uv = (vertices[ring] - vertices[a]) @ frame(n0 / np.linalg.norm(n0)).T
-    if not is_simple(uv):
-        return None
-    local = constrained_triangles(uv, [list(range(len(ring)))])
-    if local is None or len(local) != len(ring) - 2:
-        return None
-    out = ring[local]
-    if not all(_normal(vertices, f) @ n0 > 0.0 for f in out):
-        return None
-    return [tuple(int(i) for i in f) for f in out]
+    return _refilled(vertices, triangles, [t], [a, *chain, b, int(tri[(k + 2) % 3])], chain)
 
 
 def _widened(vertices, triangles, t, a, b, chain, owner):
@@ -251,8 +239,8 @@ def split_seams(vertices, triangles, component, lens=LENS, surface=None):
         n0 = _normal(vertices, triangles[t])
         if all(_normal(vertices, f) @ n0 > 0.0 for f in fan):
             cut = ([t], fan)
-        elif (filled := _filled(vertices, triangles[t], a, b, chain)) is not None:
-            cut = ([t], filled)
+        elif (filled := _filled(vertices, triangles, t, a, b, chain)) is not None:
+            cut = filled
         elif (wide := _widened(vertices, triangles, t, a, b, chain,
                                component if surface is None else surface)) is not None:
             cut = wide
